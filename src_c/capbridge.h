@@ -1,0 +1,290 @@
+/* capbridge.h — the one public header of the capbridge core.
+ *
+ * Capillary (liquid-bridge) cohesion between two spheres for discrete element
+ * simulations: the force laws of Richefeu et al. 2007 and of the laws compared by
+ * Gladkyy & Schwarze 2014, their rupture distances, the bridge state and its
+ * transitions, the liquid redistribution protocols of Richefeu et al. 2007, and an
+ * exact Laplace-Young solver that every law is measured against.
+ *
+ * Conventions (every function):
+ *   - SI units. Lengths in m, volumes in m^3, surface tension in N/m, force in N.
+ *   - Contact angles are radians inside the core; the keyword parser takes degrees.
+ *   - gap is the surface-to-surface distance; gap < 0 is an overlap.
+ *   - force is the magnitude of the attraction: >= 0, 0 when there is no bridge.
+ *   - Functions return a cb_status; outputs are written only on CB_OK.
+ *     A NaN or an infinity never leaves the core: such inputs are CB_ERR_NOT_FINITE.
+ *   - No globals, no allocation in the force path. C99, reentrant.
+ */
+#ifndef CAPBRIDGE_H
+#define CAPBRIDGE_H
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define CB_VERSION_STRING "0.1.0"
+
+/* ---------------------------------------------------------------- status */
+
+typedef enum cb_status {
+    CB_OK = 0,
+    CB_ERR_NULL,             /* a required pointer argument is NULL */
+    CB_ERR_NOT_FINITE,       /* an input is NaN or infinite */
+    CB_ERR_NEGATIVE,         /* a radius, volume or surface tension is negative or zero */
+    CB_ERR_RANGE,            /* an input lies outside what the function accepts */
+    CB_ERR_UNKNOWN_LAW,      /* a law name that is not one of cb_law_names() */
+    CB_ERR_UNKNOWN_KEYWORD,  /* a keyword or keyword value that is not recognised */
+    CB_ERR_OUT_OF_VALIDITY,  /* outside the law's stated validity, with validity = strict */
+    CB_ERR_NO_BRIDGE,        /* no bridge of this volume exists at this gap for this law */
+    CB_ERR_NO_CONVERGENCE,   /* the exact solver did not converge */
+    CB_ERR_NO_MEMORY,        /* an allocation failed (never in the force path) */
+    CB_ERR_LIQUID            /* liquid bookkeeping would lose or create liquid */
+} cb_status;
+
+/* A short English sentence for a status; never NULL. */
+const char *cb_status_message(cb_status status);
+
+/* A message buffer for configuration errors: names what is wrong and what is allowed. */
+typedef struct cb_message {
+    char text[320];
+} cb_message;
+
+/* ----------------------------------------------------------------- laws */
+
+typedef enum cb_model {
+    CB_MODEL_RICHEFEU = 0,           /* Richefeu 2007 eqs. 4-11, exponential decay */
+    CB_MODEL_WILLETT,                /* Willett 2000 full fit, Gladkyy eqs. 6-7, app. B */
+    CB_MODEL_WILLETT_REDUCED,        /* Willett 2000 closed form, Gladkyy eq. 8 */
+    CB_MODEL_RABINOVICH,             /* Rabinovich 2005 with Lambert 2008, Gladkyy eqs. 9-12 */
+    CB_MODEL_RABINOVICH_UNCORRECTED, /* Rabinovich 2005 as published, Gladkyy eq. 11 */
+    CB_MODEL_WEIGERT,                /* Weigert & Ripperger 1999, Gladkyy eq. 5, app. A */
+    CB_MODEL_SOULIE,                 /* Soulie 2006 */
+    CB_MODEL_TABLE,                  /* exact Laplace-Young solution, tabulated */
+    CB_MODEL_COUNT
+} cb_model;
+
+/* The rupture (debonding) distance rule. DEFAULT means the law's own paper's rule. */
+typedef enum cb_rupture_rule {
+    CB_RUPTURE_DEFAULT = 0,
+    CB_RUPTURE_LIAN,     /* Richefeu eq. 6: (1 + theta/2) V^(1/3) */
+    CB_RUPTURE_WILLETT,  /* Gladkyy eq. 2: (1 + theta/2)(V*^(1/3) + V*^(2/3)/10) R_h */
+    CB_RUPTURE_EXACT     /* the fold of the exact Laplace-Young branch (table law only) */
+} cb_rupture_rule;
+
+/* What the force is while the spheres overlap (gap < 0). */
+typedef enum cb_overlap_rule {
+    CB_OVERLAP_CONTACT = 0, /* the law's value at gap 0: continuous (default, Richefeu eq. 10) */
+    CB_OVERLAP_NONE         /* no capillary force in overlap (Gladkyy eq. 4): a jump at contact */
+} cb_overlap_rule;
+
+/* What happens outside the law's stated validity range (see cb_law_validity). */
+typedef enum cb_validity_rule {
+    CB_VALIDITY_EXTEND = 0, /* evaluate with the law's documented extension: finite, >= 0 */
+    CB_VALIDITY_STRICT      /* return CB_ERR_OUT_OF_VALIDITY */
+} cb_validity_rule;
+
+struct cb_table; /* the tabulated exact solution, opaque */
+
+/* A law is a value: model, parameters and options, plus what is derived from them
+ * once (cb_law_prepare). Fill it with cb_law_init, change it with cb_law_configure,
+ * then call cb_law_prepare before the first force call. */
+typedef struct cb_law {
+    cb_model model;
+    double surface_tension;   /* gamma [N/m] */
+    double contact_angle;     /* theta [rad], 0 <= theta < pi/2 */
+    double richefeu_c;        /* the constant c of Richefeu eq. 9 (default 0.9) */
+    cb_rupture_rule rupture;
+    cb_overlap_rule overlap;
+    cb_validity_rule validity;
+    /* derived by cb_law_prepare: */
+    cb_rupture_rule rupture_in_use;
+    double cos_theta, sin_theta;
+    double rupture_factor;    /* 1 + theta/2 */
+    const struct cb_table *table; /* CB_MODEL_TABLE only; owned by the law */
+    int prepared;
+} cb_law;
+
+/* Which radius a law scales lengths and volumes by (MODELS.md, "Radius conventions"). */
+typedef enum cb_radius_reference {
+    CB_RADIUS_HARMONIC = 0, /* R_h = 2 r1 r2 / (r1 + r2) (Derjaguin) */
+    CB_RADIUS_GEOMETRIC,    /* R_g = sqrt(r1 r2) */
+    CB_RADIUS_LARGE         /* max(r1, r2) */
+} cb_radius_reference;
+
+/* The stated validity range of a law, in the variables its source states it in.
+ * A bound its source does not state is 0 (minimum) or HUGE_VAL (maximum). */
+typedef struct cb_validity {
+    double volume_min, volume_max;         /* V / R_ref^3 */
+    double contact_angle_max;              /* [rad] */
+    double size_ratio_max;                 /* R_large / R_small */
+    cb_radius_reference radius;            /* R_ref */
+    const char *source;                    /* where the range is stated */
+} cb_validity;
+
+/* The radius a reference names, for these two spheres. */
+double cb_radius_of(cb_radius_reference reference, double r1, double r2);
+const char *cb_radius_reference_name(cb_radius_reference reference);
+
+/* Law names as the keyword parser spells them ("richefeu", "willett", "willett/reduced",
+ * "rabinovich", "rabinovich/uncorrected", "weigert", "soulie", "table"). */
+const char *cb_model_name(cb_model model);
+/* All names, comma separated, for error messages. */
+const char *cb_law_names(void);
+cb_status cb_model_from_name(const char *name, cb_model *model);
+
+/* Defaults: rupture = law default, overlap = contact, validity = extend, c = 0.9. */
+cb_status cb_law_init(cb_law *law, cb_model model, double surface_tension, double contact_angle);
+
+/* Keyword interface shared by the CLI and the engine bindings. Keywords:
+ *   gamma <N/m>                surface tension (> 0)
+ *   theta <degrees>            contact angle, 0 <= theta < 90
+ *   rupture lian|willett|default
+ *   overlap contact|none
+ *   validity extend|strict
+ *   c <value>                  Richefeu's constant (richefeu only, > 0)
+ * On error, msg names the keyword, the value and what is allowed. */
+cb_status cb_law_configure(cb_law *law, const char *keyword, const char *value, cb_message *msg);
+
+/* Derive the per-law constants; for the table law, build its table (allocates).
+ * Must be called after the last change and before any force call. */
+cb_status cb_law_prepare(cb_law *law, cb_message *msg);
+/* Free what cb_law_prepare allocated. Safe on any initialised law. */
+void cb_law_release(cb_law *law);
+
+cb_validity cb_law_validity(const cb_law *law);
+
+/* The capillary force between spheres of radii r1, r2 holding a bridge of volume V at
+ * this gap: 0 beyond the rupture distance, the overlap rule for gap < 0.
+ * stiffness (may be NULL) receives dF/d(gap) [N/m] (<= 0 where F falls with the gap;
+ * 0 in overlap and beyond rupture). */
+cb_status cb_force(const cb_law *law, double r1, double r2, double volume, double gap,
+                   double *force, double *stiffness);
+
+/* The rupture distance of a bridge of volume V under the law's rupture rule. */
+cb_status cb_rupture_distance(const cb_law *law, double r1, double r2, double volume,
+                              double *distance);
+
+/* The smallest volume whose rupture distance reaches this gap (0 for gap <= 0):
+ * the inverse of cb_rupture_distance, used to decide which pairs may hold liquid. */
+cb_status cb_rupture_volume(const cb_law *law, double r1, double r2, double gap,
+                            double *volume);
+
+/* An upper bound of |dF/d(gap)| over 0 <= gap <= rupture distance: the capillary
+ * stiffness the engine's time-step check uses. */
+cb_status cb_capillary_stiffness_bound(const cb_law *law, double r1, double r2, double volume,
+                                       double *stiffness);
+
+/* ------------------------------------------------------------- radii */
+
+double cb_radius_harmonic(double r1, double r2);  /* 2 r1 r2 / (r1 + r2), Derjaguin */
+double cb_radius_geometric(double r1, double r2); /* sqrt(r1 r2) */
+
+/* -------------------------------------------------------- bridge state */
+
+/* The state of the liquid bridge of one pair, kept by the engine in its pair history.
+ * Plain data: the engine may copy it as an array of CB_BRIDGE_DOUBLES doubles. */
+typedef struct cb_bridge {
+    double volume;   /* liquid in the bridge [m^3]; 0 when there is no bridge */
+    double active;   /* 1.0 while the bridge exists, 0.0 otherwise (a double for history) */
+} cb_bridge;
+#define CB_BRIDGE_DOUBLES 2
+
+typedef enum cb_transition {
+    CB_BRIDGE_STAYS_DRY = 0, /* no bridge before, none now */
+    CB_BRIDGE_FORMED,        /* formed this step: contact and liquid available */
+    CB_BRIDGE_HELD,          /* existed and still exists */
+    CB_BRIDGE_RUPTURED       /* broke this step: its liquid is released */
+} cb_transition;
+
+/* Advance the bridge of a pair to this gap.
+ * available_volume: the liquid a new bridge would receive if it formed now (the fixed
+ *   volume, or what the protocol offers); a bridge forms only at contact (gap <= 0) and
+ *   only when available_volume > 0.
+ * On CB_BRIDGE_RUPTURED, *released_volume is the liquid the bridge held (else 0). */
+cb_status cb_bridge_update(const cb_law *law, double r1, double r2, double gap,
+                           double available_volume, cb_bridge *bridge,
+                           cb_transition *transition, double *released_volume);
+
+/* ------------------------------------------------------ liquid protocols */
+
+/* Protocol 2 (Richefeu 2007 §3.2): the liquid of a broken bridge is split between the
+ * two particles in proportion to their diameters and kept as free liquid. Exact:
+ * *free1 + *free2 grows by exactly `volume` up to one rounding. */
+cb_status cb_protocol2_release(double volume, double r1, double r2, double *free1,
+                               double *free2);
+/* Protocol 2, formation: the new bridge takes all free liquid of both particles. */
+cb_status cb_protocol2_take(double *free1, double *free2, double *bridge_volume);
+
+/* Protocol 3 (Richefeu 2007 §4.2): each particle's share (in proportion to its diameter)
+ * goes to its lowest contact on its lower hemisphere. Given the heights of the contact
+ * points of one particle's bridges and the particle's centre height, return the index
+ * of the receiving bridge in *index, or -1 when the particle has no bridge below its
+ * centre (the share is then kept as the particle's free liquid). */
+cb_status cb_protocol3_receiver(double centre_height, const double *contact_height, size_t n,
+                                long *index);
+/* The share of a released volume that goes to particle 1 (diameter proportion);
+ * 0 for invalid input (a non-finite or non-positive radius or volume). */
+double cb_protocol_share(double volume, double r1, double r2);
+
+/* Protocol 1 (Richefeu 2007 §2.4, eq. 14): V_b = alpha R_g^3 over every eligible pair,
+ * alpha fixed by sum V_b = total liquid (eq. 13); a pair is eligible when its gap does
+ * not exceed the rupture distance of the volume it would receive.
+ * Input arrays of n pairs (r1, r2, gap); output volume[i] (0 for pairs left dry) and
+ * alpha. Liquid is conserved: sum volume = total_liquid up to rounding.
+ * Pairs are admitted in the order of the alpha at which they become eligible; when the
+ * total falls in a jump of sum(alpha) (eqs. 13-14 have no exact solution), the pair at
+ * the jump stays dry. CB_ERR_LIQUID when liquid > 0 but no pair can hold it.
+ * work: scratch of at least 2 n doubles and n size_t (caller-provided, no allocation). */
+typedef struct cb_protocol1_work {
+    double *threshold;  /* n */
+    double *weight;     /* n */
+    size_t *order;      /* n */
+} cb_protocol1_work;
+cb_status cb_protocol1_distribute(const cb_law *law, size_t n, const double *r1,
+                                  const double *r2, const double *gap, double total_liquid,
+                                  cb_protocol1_work work, double *volume, double *alpha);
+
+/* --------------------------------------------- exact Laplace-Young solver */
+
+/* An axisymmetric, gravity-free bridge between two spheres.
+ * pressure is p_liquid - p_gas (negative: suction). The axial force is the first integral
+ * F = 2 pi gamma y cos(phi) - pi y^2 pressure, evaluated at three places as a check. */
+typedef struct cb_exact_bridge {
+    double gap;
+    double force;            /* attractive > 0 [N] (the value at the neck) */
+    double force_contact1;   /* the same force at the contact line on sphere 1 */
+    double force_contact2;   /* ... and on sphere 2 */
+    double filling_angle1;   /* delta_1 [rad] */
+    double filling_angle2;   /* delta_2 [rad] */
+    double pressure;         /* p_liquid - p_gas [Pa] */
+    double neck_radius;      /* smallest radius of the profile [m] */
+    double volume;           /* volume recovered from the profile [m^3] */
+} cb_exact_bridge;
+
+typedef struct cb_exact_problem {
+    double r1, r2;           /* radii [m] */
+    double contact_angle;    /* [rad], 0 <= theta < pi/2 */
+    double surface_tension;  /* [N/m] */
+    double volume;           /* [m^3] */
+    int steps;               /* integration steps along the profile; 0 = default */
+} cb_exact_problem;
+
+/* The bridge at one gap (0 <= gap <= rupture distance), on the branch connected to
+ * gap = 0. CB_ERR_NO_BRIDGE beyond rupture. */
+cb_status cb_exact_solve(const cb_exact_problem *problem, double gap, cb_exact_bridge *bridge);
+
+/* The rupture distance: the fold (largest gap) of that branch at fixed volume. */
+cb_status cb_exact_rupture(const cb_exact_problem *problem, double *distance,
+                           cb_exact_bridge *at_rupture);
+
+/* n bridges at the given gaps (ascending, each within [0, rupture]), tracing the branch once. */
+cb_status cb_exact_curve(const cb_exact_problem *problem, size_t n, const double *gaps,
+                         cb_exact_bridge *bridges);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* CAPBRIDGE_H */
