@@ -1,0 +1,434 @@
+/* law.c — a law as a value: names, keywords, preparation, and the force dispatcher
+ * that applies the overlap, rupture and validity rules around each law's formula. */
+#include "laws.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define CB_PI 3.14159265358979323846
+
+static const char *const model_names[CB_MODEL_COUNT] = {
+    "richefeu", "willett", "willett/reduced", "rabinovich", "rabinovich/uncorrected",
+    "weigert", "soulie", "table"};
+
+static const cb_force_fn model_forces[CB_MODEL_COUNT] = {
+    cb_richefeu_force,   cb_willett_force,
+    cb_willett_reduced_force, cb_rabinovich_force,
+    cb_rabinovich_uncorrected_force, cb_weigert_force,
+    cb_soulie_force,     cb_table_force};
+
+cb_status cb_fail(cb_message *msg, cb_status status, const char *format, ...)
+{
+    if (msg) {
+        va_list args;
+        va_start(args, format);
+        vsnprintf(msg->text, sizeof msg->text, format, args);
+        va_end(args);
+    }
+    return status;
+}
+
+const char *cb_model_name(cb_model model)
+{
+    return (model >= 0 && model < CB_MODEL_COUNT) ? model_names[model] : "unknown";
+}
+
+const char *cb_law_names(void)
+{
+    return "richefeu, willett, willett/reduced, rabinovich, rabinovich/uncorrected, "
+           "weigert, soulie, table";
+}
+
+cb_status cb_model_from_name(const char *name, cb_model *model)
+{
+    if (!name || !model) return CB_ERR_NULL;
+    for (int m = 0; m < CB_MODEL_COUNT; ++m) {
+        if (strcmp(name, model_names[m]) == 0) {
+            *model = (cb_model)m;
+            return CB_OK;
+        }
+    }
+    return CB_ERR_UNKNOWN_LAW;
+}
+
+static cb_status check_surface_tension(double gamma, cb_message *msg)
+{
+    if (!isfinite(gamma))
+        return cb_fail(msg, CB_ERR_NOT_FINITE, "surface tension gamma must be finite");
+    if (gamma <= 0.0)
+        return cb_fail(msg, CB_ERR_NEGATIVE, "surface tension gamma = %g: must be > 0 (N/m)",
+                       gamma);
+    return CB_OK;
+}
+
+static cb_status check_contact_angle(double theta, cb_message *msg)
+{
+    if (!isfinite(theta))
+        return cb_fail(msg, CB_ERR_NOT_FINITE, "contact angle theta must be finite");
+    if (theta < 0.0 || theta >= 0.5 * CB_PI)
+        return cb_fail(msg, CB_ERR_RANGE,
+                       "contact angle theta = %g degrees: allowed 0 <= theta < 90 degrees",
+                       theta * 180.0 / CB_PI);
+    return CB_OK;
+}
+
+cb_status cb_law_init(cb_law *law, cb_model model, double surface_tension, double contact_angle)
+{
+    if (!law) return CB_ERR_NULL;
+    if (model < 0 || model >= CB_MODEL_COUNT) return CB_ERR_UNKNOWN_LAW;
+    cb_status status = check_surface_tension(surface_tension, NULL);
+    if (status != CB_OK) return status;
+    status = check_contact_angle(contact_angle, NULL);
+    if (status != CB_OK) return status;
+    memset(law, 0, sizeof *law);
+    law->model = model;
+    law->surface_tension = surface_tension;
+    law->contact_angle = contact_angle;
+    law->richefeu_c = 0.9; /* Richefeu 2007 after eq. 9: c ~ 0.9 */
+    law->rupture = CB_RUPTURE_DEFAULT;
+    law->overlap = CB_OVERLAP_CONTACT;
+    law->validity = CB_VALIDITY_EXTEND;
+    return CB_OK;
+}
+
+/* A whole string that is one finite number. */
+static int parse_number(const char *text, double *value)
+{
+    char *end = NULL;
+    if (!text || !*text) return 0;
+    double v = strtod(text, &end);
+    if (end == text || *end != '\0' || !isfinite(v)) return 0;
+    *value = v;
+    return 1;
+}
+
+/* Any change leaves the law unprepared until cb_law_prepare derives it again. */
+static cb_status apply_keyword(cb_law *law, const char *keyword, const char *value,
+                               cb_message *msg);
+
+cb_status cb_law_configure(cb_law *law, const char *keyword, const char *value, cb_message *msg)
+{
+    if (!law || !keyword) return cb_fail(msg, CB_ERR_NULL, "missing keyword");
+    cb_status status = apply_keyword(law, keyword, value, msg);
+    if (status == CB_OK) law->prepared = 0;
+    return status;
+}
+
+static cb_status apply_keyword(cb_law *law, const char *keyword, const char *value,
+                               cb_message *msg)
+{
+    if (!value) return cb_fail(msg, CB_ERR_RANGE, "keyword '%s' needs a value", keyword);
+    double number = 0.0;
+    int is_number = parse_number(value, &number);
+
+    if (strcmp(keyword, "gamma") == 0) {
+        if (!is_number)
+            return cb_fail(msg, CB_ERR_RANGE,
+                           "gamma '%s' is not a number: give the surface tension in N/m (> 0)",
+                           value);
+        cb_status status = check_surface_tension(number, msg);
+        if (status == CB_OK) law->surface_tension = number;
+        return status;
+    }
+    if (strcmp(keyword, "theta") == 0) {
+        if (!is_number)
+            return cb_fail(msg, CB_ERR_RANGE,
+                           "theta '%s' is not a number: give the contact angle in degrees, "
+                           "0 <= theta < 90",
+                           value);
+        cb_status status = check_contact_angle(number * CB_PI / 180.0, msg);
+        if (status == CB_OK) law->contact_angle = number * CB_PI / 180.0;
+        return status;
+    }
+    if (strcmp(keyword, "c") == 0) {
+        if (law->model != CB_MODEL_RICHEFEU)
+            return cb_fail(msg, CB_ERR_UNKNOWN_KEYWORD,
+                           "keyword 'c' (Richefeu's constant) applies to law richefeu only, "
+                           "not to %s",
+                           cb_model_name(law->model));
+        if (!is_number || number <= 0.0)
+            return cb_fail(msg, CB_ERR_RANGE, "c '%s': must be a number > 0 (default 0.9)",
+                           value);
+        law->richefeu_c = number;
+        return CB_OK;
+    }
+    if (strcmp(keyword, "rupture") == 0) {
+        if (strcmp(value, "default") == 0) law->rupture = CB_RUPTURE_DEFAULT;
+        else if (strcmp(value, "lian") == 0) law->rupture = CB_RUPTURE_LIAN;
+        else if (strcmp(value, "willett") == 0) law->rupture = CB_RUPTURE_WILLETT;
+        else if (strcmp(value, "exact") == 0 && law->model == CB_MODEL_TABLE)
+            law->rupture = CB_RUPTURE_EXACT;
+        else
+            return cb_fail(msg, CB_ERR_UNKNOWN_KEYWORD,
+                           "rupture '%s': allowed lian, willett, default%s", value,
+                           law->model == CB_MODEL_TABLE ? ", exact" : "");
+        return CB_OK;
+    }
+    if (strcmp(keyword, "overlap") == 0) {
+        if (strcmp(value, "contact") == 0) law->overlap = CB_OVERLAP_CONTACT;
+        else if (strcmp(value, "none") == 0) law->overlap = CB_OVERLAP_NONE;
+        else
+            return cb_fail(msg, CB_ERR_UNKNOWN_KEYWORD, "overlap '%s': allowed contact, none",
+                           value);
+        return CB_OK;
+    }
+    if (strcmp(keyword, "validity") == 0) {
+        if (strcmp(value, "extend") == 0) law->validity = CB_VALIDITY_EXTEND;
+        else if (strcmp(value, "strict") == 0) law->validity = CB_VALIDITY_STRICT;
+        else
+            return cb_fail(msg, CB_ERR_UNKNOWN_KEYWORD,
+                           "validity '%s': allowed extend, strict", value);
+        return CB_OK;
+    }
+    return cb_fail(msg, CB_ERR_UNKNOWN_KEYWORD,
+                   "unknown keyword '%s': allowed gamma, theta, rupture, overlap, validity, c",
+                   keyword);
+}
+
+/* The rupture rule each law's source uses: Richefeu eq. 6 takes Lian's; Gladkyy eq. 2
+ * applies Willett's to every law it compares; Soulie 2006 takes Lian's; the table law
+ * knows the exact fold. */
+static cb_rupture_rule default_rupture(cb_model model)
+{
+    switch (model) {
+    case CB_MODEL_RICHEFEU:
+    case CB_MODEL_SOULIE: return CB_RUPTURE_LIAN;
+    case CB_MODEL_TABLE: return CB_RUPTURE_EXACT;
+    default: return CB_RUPTURE_WILLETT;
+    }
+}
+
+cb_status cb_law_prepare(cb_law *law, cb_message *msg)
+{
+    if (!law) return cb_fail(msg, CB_ERR_NULL, "law is NULL");
+    cb_status status = check_surface_tension(law->surface_tension, msg);
+    if (status != CB_OK) return status;
+    status = check_contact_angle(law->contact_angle, msg);
+    if (status != CB_OK) return status;
+    if (law->model < 0 || law->model >= CB_MODEL_COUNT)
+        return cb_fail(msg, CB_ERR_UNKNOWN_LAW, "unknown law: allowed %s", cb_law_names());
+    if (law->rupture == CB_RUPTURE_EXACT && law->model != CB_MODEL_TABLE)
+        return cb_fail(msg, CB_ERR_UNKNOWN_KEYWORD,
+                       "rupture exact is available for the table law only");
+
+    law->rupture_in_use =
+        law->rupture == CB_RUPTURE_DEFAULT ? default_rupture(law->model) : law->rupture;
+    law->cos_theta = cos(law->contact_angle);
+    law->sin_theta = sin(law->contact_angle);
+    law->rupture_factor = 1.0 + 0.5 * law->contact_angle; /* (1 + theta/2), theta in rad */
+
+    /* The table depends on the contact angle only: keep it while theta is unchanged. */
+    int table_current = law->model == CB_MODEL_TABLE && law->table &&
+                        cb_table_contact_angle(law->table) == law->contact_angle;
+    if (!table_current) cb_law_release(law);
+    if (law->model == CB_MODEL_TABLE && !table_current) {
+        struct cb_table *table = NULL;
+        status = cb_table_create(law->contact_angle, &table, msg);
+        if (status != CB_OK) return status;
+        law->table = table;
+    }
+    law->prepared = 1;
+    return CB_OK;
+}
+
+void cb_law_release(cb_law *law)
+{
+    if (!law) return;
+    if (law->table) cb_table_destroy((struct cb_table *)law->table);
+    law->table = NULL;
+    law->prepared = 0;
+}
+
+cb_validity cb_law_validity(const cb_law *law)
+{
+    switch (law->model) {
+    case CB_MODEL_RICHEFEU: return cb_richefeu_validity();
+    case CB_MODEL_WILLETT: return cb_willett_validity();
+    case CB_MODEL_WILLETT_REDUCED: return cb_willett_reduced_validity();
+    case CB_MODEL_RABINOVICH:
+    case CB_MODEL_RABINOVICH_UNCORRECTED: return cb_rabinovich_validity();
+    case CB_MODEL_WEIGERT: return cb_weigert_validity();
+    case CB_MODEL_SOULIE: return cb_soulie_validity();
+    case CB_MODEL_TABLE:
+    default: return cb_table_validity(law);
+    }
+}
+
+cb_pair cb_pair_make(double r1, double r2, double volume)
+{
+    cb_pair pair;
+    pair.r1 = r1;
+    pair.r2 = r2;
+    pair.r_small = r1 < r2 ? r1 : r2;
+    pair.r_large = r1 < r2 ? r2 : r1;
+    pair.r_harmonic = cb_radius_harmonic(r1, r2);
+    pair.r_geometric = cb_radius_geometric(r1, r2);
+    pair.volume = volume;
+    return pair;
+}
+
+static cb_status check_pair(const cb_law *law, double r1, double r2, double volume)
+{
+    if (!law) return CB_ERR_NULL;
+    if (!law->prepared) return CB_ERR_RANGE;
+    if (!isfinite(r1) || !isfinite(r2) || !isfinite(volume)) return CB_ERR_NOT_FINITE;
+    if (r1 <= 0.0 || r2 <= 0.0 || volume <= 0.0) return CB_ERR_NEGATIVE;
+    return CB_OK;
+}
+
+static int inside_validity(const cb_law *law, const cb_pair *pair)
+{
+    cb_validity v = cb_law_validity(law);
+    double r_ref = cb_radius_of(v.radius, pair->r1, pair->r2);
+    double scaled_volume = pair->volume / (r_ref * r_ref * r_ref);
+    return scaled_volume >= v.volume_min && scaled_volume <= v.volume_max &&
+           law->contact_angle <= v.contact_angle_max &&
+           pair->r_large / pair->r_small <= v.size_ratio_max;
+}
+
+static double rupture_of(const cb_law *law, const cb_pair *pair)
+{
+    switch (law->rupture_in_use) {
+    case CB_RUPTURE_LIAN: return cb_rupture_lian(law, pair);
+    case CB_RUPTURE_WILLETT: return cb_rupture_willett(law, pair);
+    case CB_RUPTURE_EXACT:
+    default: return cb_table_rupture(law, pair);
+    }
+}
+
+cb_status cb_rupture_distance(const cb_law *law, double r1, double r2, double volume,
+                              double *distance)
+{
+    cb_status status = check_pair(law, r1, r2, volume);
+    if (status != CB_OK) return status;
+    if (!distance) return CB_ERR_NULL;
+    cb_pair pair = cb_pair_make(r1, r2, volume);
+    if (law->validity == CB_VALIDITY_STRICT && !inside_validity(law, &pair))
+        return CB_ERR_OUT_OF_VALIDITY;
+    double d = rupture_of(law, &pair);
+    if (!isfinite(d)) return CB_ERR_RANGE;
+    *distance = d;
+    return CB_OK;
+}
+
+cb_status cb_rupture_volume(const cb_law *law, double r1, double r2, double gap, double *volume)
+{
+    if (!law || !volume) return CB_ERR_NULL;
+    if (!law->prepared) return CB_ERR_RANGE;
+    if (!isfinite(r1) || !isfinite(r2) || !isfinite(gap)) return CB_ERR_NOT_FINITE;
+    if (r1 <= 0.0 || r2 <= 0.0) return CB_ERR_NEGATIVE;
+    if (gap <= 0.0) {
+        *volume = 0.0;
+        return CB_OK;
+    }
+    cb_pair pair = cb_pair_make(r1, r2, 0.0);
+    double v;
+    switch (law->rupture_in_use) {
+    case CB_RUPTURE_LIAN: v = cb_rupture_volume_lian(law, &pair, gap); break;
+    case CB_RUPTURE_WILLETT: v = cb_rupture_volume_willett(law, &pair, gap); break;
+    case CB_RUPTURE_EXACT:
+    default: v = cb_table_rupture_volume(law, &pair, gap); break;
+    }
+    if (!isfinite(v)) return CB_ERR_RANGE;
+    *volume = v;
+    return CB_OK;
+}
+
+cb_status cb_force(const cb_law *law, double r1, double r2, double volume, double gap,
+                   double *force, double *stiffness)
+{
+    cb_status status = check_pair(law, r1, r2, volume);
+    if (status != CB_OK) return status;
+    if (!force) return CB_ERR_NULL;
+    if (!isfinite(gap)) return CB_ERR_NOT_FINITE;
+    cb_pair pair = cb_pair_make(r1, r2, volume);
+    if (law->validity == CB_VALIDITY_STRICT && !inside_validity(law, &pair))
+        return CB_ERR_OUT_OF_VALIDITY;
+
+    double f = 0.0, df = 0.0;
+    if (gap < 0.0) {
+        /* Overlap: Richefeu eq. 10 keeps the contact value (continuous); Gladkyy eq. 4
+         * applies no capillary force in mechanical contact. */
+        if (law->overlap == CB_OVERLAP_CONTACT) {
+            status = model_forces[law->model](law, &pair, 0.0, &f, &df);
+            df = 0.0;
+        }
+    } else if (gap <= rupture_of(law, &pair)) {
+        status = model_forces[law->model](law, &pair, gap, &f, &df);
+    }
+    if (status != CB_OK) return status;
+    if (!isfinite(f) || !isfinite(df) || f < 0.0) return CB_ERR_RANGE;
+    *force = f;
+    if (stiffness) *stiffness = df;
+    return CB_OK;
+}
+
+/* |dF/dgap| at gap = rupture t^2 (0 where the law has no bridge). */
+static cb_status stiffness_at(const cb_law *law, double r1, double r2, double volume,
+                             double rupture, double t, double *magnitude)
+{
+    double f = 0.0, df = 0.0;
+    cb_status status = cb_force(law, r1, r2, volume, rupture * t * t, &f, &df);
+    if (status == CB_ERR_NO_BRIDGE) {
+        *magnitude = 0.0;
+        return CB_OK;
+    }
+    *magnitude = fabs(df);
+    return status;
+}
+
+cb_status cb_capillary_stiffness_bound(const cb_law *law, double r1, double r2, double volume,
+                                       double *stiffness)
+{
+    /* The laws' dF/dgap is smooth on [0, rupture]; its largest magnitude is sampled on
+     * points clustered towards contact, where the exponential-like laws are steepest.
+     * Some laws (Willett's two, Weigert) are steepest at an interior gap, which the samples
+     * can miss by ~1%: the best sample's bracket is then refined by golden section. */
+    enum { SAMPLES = 128, REFINE = 60 };
+    if (!stiffness) return CB_ERR_NULL;
+    double rupture = 0.0;
+    cb_status status = cb_rupture_distance(law, r1, r2, volume, &rupture);
+    if (status != CB_OK) return status;
+    double largest = 0.0;
+    int best = 0;
+    for (int i = 0; i <= SAMPLES; ++i) {
+        double magnitude = 0.0;
+        status = stiffness_at(law, r1, r2, volume, rupture, (double)i / SAMPLES, &magnitude);
+        if (status != CB_OK) return status;
+        if (magnitude > largest) {
+            largest = magnitude;
+            best = i;
+        }
+    }
+    const double golden = 0.61803398874989485;
+    double lo = (best > 0 ? best - 1 : 0) / (double)SAMPLES;
+    double hi = (best < SAMPLES ? best + 1 : SAMPLES) / (double)SAMPLES;
+    double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo), fa = 0.0, fb = 0.0;
+    if ((status = stiffness_at(law, r1, r2, volume, rupture, a, &fa)) != CB_OK) return status;
+    if ((status = stiffness_at(law, r1, r2, volume, rupture, b, &fb)) != CB_OK) return status;
+    for (int k = 0; k < REFINE; ++k) {
+        if (fa > largest) largest = fa;
+        if (fb > largest) largest = fb;
+        if (fa >= fb) {
+            hi = b;
+            b = a;
+            fb = fa;
+            a = hi - golden * (hi - lo);
+            status = stiffness_at(law, r1, r2, volume, rupture, a, &fa);
+        } else {
+            lo = a;
+            a = b;
+            fa = fb;
+            b = lo + golden * (hi - lo);
+            status = stiffness_at(law, r1, r2, volume, rupture, b, &fb);
+        }
+        if (status != CB_OK) return status;
+    }
+    if (fa > largest) largest = fa;
+    if (fb > largest) largest = fb;
+    *stiffness = largest;
+    return CB_OK;
+}
