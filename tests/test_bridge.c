@@ -1,0 +1,320 @@
+/* test_bridge.c — the bridge state and its transitions (cb_bridge_update).
+ *
+ * Rupture distances are recomputed here from the published formulas (Richefeu eq. 6 for
+ * Lian's rule, Gladkyy eq. 2 for Willett's), not taken from the library, wherever the
+ * test needs a number; the library's own cb_rupture_distance is used only where the test
+ * is about the exact boundary (held at d, ruptured just beyond). */
+#include "capbridge.h"
+#include "check.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#define PI_L 3.14159265358979323846264338327950288L
+
+static cb_law make_law(double theta_degrees, const char *rupture, const char *validity)
+{
+    cb_law law;
+    cb_message msg;
+    char text[32];
+    CHECK_STATUS(cb_law_init(&law, CB_MODEL_RICHEFEU, 0.072, 0.0), CB_OK);
+    snprintf(text, sizeof text, "%.17g", theta_degrees);
+    CHECK_STATUS(cb_law_configure(&law, "theta", text, &msg), CB_OK);
+    if (rupture) CHECK_STATUS(cb_law_configure(&law, "rupture", rupture, &msg), CB_OK);
+    if (validity) CHECK_STATUS(cb_law_configure(&law, "validity", validity, &msg), CB_OK);
+    CHECK_STATUS(cb_law_prepare(&law, &msg), CB_OK);
+    return law;
+}
+
+/* Richefeu 2007 eq. 6 (Lian 1998): (1 + theta/2) V^(1/3), theta in radians. */
+static double lian_reference(double theta_degrees, double volume)
+{
+    long double theta = theta_degrees * PI_L / 180.0L;
+    return (double)((1.0L + theta / 2.0L) * cbrtl((long double)volume));
+}
+
+/* Gladkyy 2014 eq. 2 (Willett 2000): R_h (1 + theta/2) (V*^(1/3) + V*^(2/3) / 10). */
+static double willett_reference(double theta_degrees, double r1, double r2, double volume)
+{
+    long double theta = theta_degrees * PI_L / 180.0L;
+    long double rh = 2.0L * r1 * r2 / ((long double)r1 + r2);
+    long double v = volume / (rh * rh * rh);
+    return (double)(rh * (1.0L + theta / 2.0L) * (cbrtl(v) + cbrtl(v * v) / 10.0L));
+}
+
+static int same_bits(double a, double b) { return memcmp(&a, &b, sizeof a) == 0; }
+
+/* One update, checking the status; returns the transition. */
+static cb_transition step(const cb_law *law, double r1, double r2, double gap, double available,
+                          cb_bridge *bridge, double *released)
+{
+    cb_transition t = (cb_transition)-1;
+    CHECK_STATUS(cb_bridge_update(law, r1, r2, gap, available, bridge, &t, released), CB_OK);
+    return t;
+}
+
+/* The full life cycle on a scripted gap sequence, for a law whose rupture distance for
+ * (r1, r2, volume) is `expected_rupture` by the published formula. */
+static void life_cycle(const cb_law *law, double r1, double r2, double volume,
+                       double expected_rupture)
+{
+    cb_bridge b = {0.0, 0.0};
+    double released = -1.0;
+    double d = 0.0;
+    CHECK_STATUS(cb_rupture_distance(law, r1, r2, volume, &d), CB_OK);
+    CHECK_REL(d, expected_rupture, 1e-14);
+
+    /* Dry and apart, liquid on offer: no bridge across a gap. */
+    CHECK(step(law, r1, r2, 0.5 * d, volume, &b, &released) == CB_BRIDGE_STAYS_DRY);
+    CHECK(b.volume == 0.0 && b.active == 0.0 && released == 0.0);
+    /* Contact but no liquid: no bridge. */
+    CHECK(step(law, r1, r2, 0.0, 0.0, &b, &released) == CB_BRIDGE_STAYS_DRY);
+    CHECK(step(law, r1, r2, -1e-6, 0.0, &b, &released) == CB_BRIDGE_STAYS_DRY);
+    CHECK(b.volume == 0.0 && b.active == 0.0);
+    /* Approaching: still apart by a hair. */
+    CHECK(step(law, r1, r2, 1e-300, volume, &b, &released) == CB_BRIDGE_STAYS_DRY);
+    /* Contact with liquid: formed, with exactly the volume on offer. */
+    released = -1.0;
+    CHECK(step(law, r1, r2, -1e-7, volume, &b, &released) == CB_BRIDGE_FORMED);
+    CHECK(same_bits(b.volume, volume));
+    CHECK(b.active == 1.0);
+    CHECK(released == 0.0);
+    /* Held while the gap grows, whatever is on offer now. */
+    const double gaps[] = {-2e-6, 0.0, 1e-300, 0.25 * d, 0.5 * d, 0.999 * d, d};
+    const double offers[] = {0.0, 5.0 * volume, 0.0, volume, 1e-3, 0.0, 2.0 * volume};
+    for (size_t i = 0; i < sizeof gaps / sizeof gaps[0]; ++i) {
+        released = -1.0;
+        CHECK(step(law, r1, r2, gaps[i], offers[i], &b, &released) == CB_BRIDGE_HELD);
+        CHECK(same_bits(b.volume, volume));
+        CHECK(b.active == 1.0);
+        CHECK(released == 0.0);
+    }
+    /* Held at exactly d (repeatedly), ruptured at the first gap beyond it. */
+    CHECK(step(law, r1, r2, d, 0.0, &b, &released) == CB_BRIDGE_HELD);
+    CHECK(step(law, r1, r2, d * (1.0 + 1e-12), 0.0, &b, &released) == CB_BRIDGE_RUPTURED);
+    CHECK(same_bits(released, volume));
+    CHECK(b.volume == 0.0 && b.active == 0.0);
+    /* After rupture: dry, nothing more released, no re-formation across a gap. */
+    CHECK(step(law, r1, r2, 2.0 * d, volume, &b, &released) == CB_BRIDGE_STAYS_DRY);
+    CHECK(released == 0.0);
+    CHECK(step(law, r1, r2, 0.5 * d, volume, &b, &released) == CB_BRIDGE_STAYS_DRY);
+    CHECK(b.active == 0.0);
+    /* Back at contact (gap exactly 0 counts as contact): a new bridge. */
+    CHECK(step(law, r1, r2, 0.0, 0.5 * volume, &b, &released) == CB_BRIDGE_FORMED);
+    CHECK(same_bits(b.volume, 0.5 * volume));
+
+    /* The boundary to the last representable gap: d held, the next double ruptures. */
+    cb_bridge c = {volume, 1.0};
+    CHECK(step(law, r1, r2, d, 0.0, &c, &released) == CB_BRIDGE_HELD);
+    CHECK(step(law, r1, r2, nextafter(d, HUGE_VAL), 0.0, &c, &released) ==
+          CB_BRIDGE_RUPTURED);
+    CHECK(same_bits(released, volume));
+
+    /* Overlap keeps a bridge, however deep. */
+    cb_bridge o = {volume, 1.0};
+    const double overlaps[] = {-1e-9, -1e-5, -0.1 * r1, -r1};
+    for (size_t i = 0; i < sizeof overlaps / sizeof overlaps[0]; ++i) {
+        CHECK(step(law, r1, r2, overlaps[i], 0.0, &o, &released) == CB_BRIDGE_HELD);
+        CHECK(same_bits(o.volume, volume) && o.active == 1.0 && released == 0.0);
+    }
+}
+
+/* A reference state machine, written from the rules, against random gap sequences. */
+static uint64_t rng_state = 0x9E3779B97F4A7C15ull;
+static double uniform(void)
+{
+    rng_state ^= rng_state >> 12;
+    rng_state ^= rng_state << 25;
+    rng_state ^= rng_state >> 27;
+    return (double)((rng_state * 0x2545F4914F6CDD1Dull) >> 11) * 0x1.0p-53;
+}
+
+static void random_sequences(const cb_law *law, double theta_degrees)
+{
+    int formed = 0, ruptured = 0, held = 0, dry = 0, mismatches = 0;
+    for (int run = 0; run < 200; ++run) {
+        double r1 = 1e-3 * (0.4 + 0.25 * uniform());
+        double r2 = 1e-3 * (0.4 + 0.25 * uniform());
+        cb_bridge b = {0.0, 0.0};
+        double ref_volume = 0.0; /* the reference: 0 when dry */
+        double gap = 0.0;
+        for (int i = 0; i < 400; ++i) {
+            double offer = uniform() < 0.2 ? 0.0 : 1e-12 * (0.1 + 10.0 * uniform());
+            /* Volumes of 1e-13..1e-11 m^3 break at gaps of about 50..250 um. */
+            gap += 8e-5 * (uniform() - 0.5);
+            if (gap > 3e-4) gap = 3e-4;
+            if (gap < -1e-5) gap = -1e-5;
+            /* Keep clear of the rounding margin of the two formulas. */
+            if (ref_volume > 0.0) {
+                double dref = lian_reference(theta_degrees, ref_volume);
+                if (fabs(gap - dref) <= 1e-12 * dref) gap = dref * (1.0 + 1e-9);
+            }
+            cb_transition expected;
+            double expected_release = 0.0;
+            if (ref_volume > 0.0) {
+                if (gap > 0.0 && gap > lian_reference(theta_degrees, ref_volume)) {
+                    expected = CB_BRIDGE_RUPTURED;
+                    expected_release = ref_volume;
+                    ref_volume = 0.0;
+                } else {
+                    expected = CB_BRIDGE_HELD;
+                }
+            } else if (gap <= 0.0 && offer > 0.0) {
+                expected = CB_BRIDGE_FORMED;
+                ref_volume = offer;
+            } else {
+                expected = CB_BRIDGE_STAYS_DRY;
+            }
+            double released = -1.0;
+            cb_transition t = step(law, r1, r2, gap, offer, &b, &released);
+            if (t != expected || !same_bits(b.volume, ref_volume) ||
+                b.active != (ref_volume > 0.0 ? 1.0 : 0.0) ||
+                !same_bits(released, expected_release))
+                ++mismatches;
+            formed += t == CB_BRIDGE_FORMED;
+            ruptured += t == CB_BRIDGE_RUPTURED;
+            held += t == CB_BRIDGE_HELD;
+            dry += t == CB_BRIDGE_STAYS_DRY;
+        }
+    }
+    CHECK(mismatches == 0);
+    printf("random sequences (theta %g): %d formed, %d held, %d ruptured, %d dry\n",
+           theta_degrees, formed, held, ruptured, dry);
+    /* The sequences must have exercised every transition many times. */
+    CHECK(formed > 100 && ruptured > 100 && held > 1000 && dry > 1000);
+}
+
+/* An error leaves bridge, transition and released volume untouched. */
+static void expect_error(const cb_law *law, double r1, double r2, double gap, double available,
+                         cb_bridge state, cb_status expected)
+{
+    cb_bridge b = state;
+    cb_transition t = (cb_transition)77;
+    double released = 12345.0;
+    CHECK_STATUS(cb_bridge_update(law, r1, r2, gap, available, &b, &t, &released), expected);
+    CHECK(memcmp(&b, &state, sizeof b) == 0);
+    CHECK(t == (cb_transition)77);
+    CHECK(released == 12345.0);
+}
+
+static void errors(const cb_law *law)
+{
+    const double v = 1e-12, r = 5e-4;
+    cb_bridge dry = {0.0, 0.0}, wet = {v, 1.0};
+    cb_transition t;
+    double released;
+    CHECK_STATUS(cb_bridge_update(NULL, r, r, 0.0, v, &dry, &t, &released), CB_ERR_NULL);
+    CHECK_STATUS(cb_bridge_update(law, r, r, 0.0, v, NULL, &t, &released), CB_ERR_NULL);
+    CHECK_STATUS(cb_bridge_update(law, r, r, 0.0, v, &dry, NULL, &released), CB_ERR_NULL);
+    CHECK_STATUS(cb_bridge_update(law, r, r, 0.0, v, &dry, &t, NULL), CB_ERR_NULL);
+    CHECK(dry.volume == 0.0 && dry.active == 0.0);
+
+    cb_law unprepared;
+    CHECK_STATUS(cb_law_init(&unprepared, CB_MODEL_RICHEFEU, 0.072, 0.0), CB_OK);
+    expect_error(&unprepared, r, r, 0.0, v, dry, CB_ERR_RANGE);
+
+    const double bad[] = {NAN, HUGE_VAL, -HUGE_VAL};
+    for (int i = 0; i < 3; ++i) {
+        expect_error(law, bad[i], r, 0.0, v, dry, CB_ERR_NOT_FINITE);
+        expect_error(law, r, bad[i], 1e-6, v, wet, CB_ERR_NOT_FINITE);
+        expect_error(law, r, r, bad[i], v, wet, CB_ERR_NOT_FINITE);
+        expect_error(law, r, r, -1e-6, bad[i], dry, CB_ERR_NOT_FINITE);
+        cb_bridge corrupt = {bad[i], 1.0};
+        expect_error(law, r, r, 1e-6, v, corrupt, CB_ERR_NOT_FINITE);
+        cb_bridge corrupt_flag = {v, bad[i]};
+        expect_error(law, r, r, 1e-6, v, corrupt_flag, CB_ERR_NOT_FINITE);
+    }
+    expect_error(law, 0.0, r, 0.0, v, dry, CB_ERR_NEGATIVE);
+    expect_error(law, r, -r, 0.0, v, wet, CB_ERR_NEGATIVE);
+    expect_error(law, r, r, -1e-6, -v, dry, CB_ERR_NEGATIVE);
+    expect_error(law, r, r, -1e-6, -0.0 - 1e-300, dry, CB_ERR_NEGATIVE);
+
+    /* States that are neither dry {0, 0} nor active {V > 0, 1}. */
+    cb_bridge negative = {-v, 1.0}, empty_active = {0.0, 1.0}, liquid_inactive = {v, 0.0},
+              half = {v, 0.5}, two = {v, 2.0}, negative_dry = {-v, 0.0};
+    expect_error(law, r, r, 1e-6, v, negative, CB_ERR_NEGATIVE);
+    expect_error(law, r, r, 1e-6, v, empty_active, CB_ERR_NEGATIVE);
+    expect_error(law, r, r, -1e-6, v, liquid_inactive, CB_ERR_RANGE);
+    expect_error(law, r, r, 1e-6, v, half, CB_ERR_RANGE);
+    expect_error(law, r, r, 1e-6, v, two, CB_ERR_RANGE);
+    expect_error(law, r, r, 1e-6, v, negative_dry, CB_ERR_NEGATIVE);
+
+    /* -0.0 is a dry volume and a contact gap. */
+    cb_bridge minus_zero = {-0.0, 0.0};
+    CHECK(step(law, r, r, -0.0, v, &minus_zero, &released) == CB_BRIDGE_FORMED);
+    CHECK(same_bits(minus_zero.volume, v));
+}
+
+/* Validity strict: a volume the law refuses is an error at formation and on the way out;
+ * nothing changes. Richefeu's law is fitted for theta = 0 only (its stated validity). */
+static void strict_validity(void)
+{
+    const double v = 1e-12, r = 5e-4;
+    cb_law strict = make_law(20.0, NULL, "strict");
+    cb_bridge dry = {0.0, 0.0}, wet = {v, 1.0};
+    expect_error(&strict, r, r, -1e-7, v, dry, CB_ERR_OUT_OF_VALIDITY);
+    expect_error(&strict, r, r, 1e-6, v, wet, CB_ERR_OUT_OF_VALIDITY);
+    /* Outside the range but nothing to evaluate: dry apart, or held in overlap. */
+    double released = -1.0;
+    cb_bridge b = dry;
+    CHECK(step(&strict, r, r, 1e-6, v, &b, &released) == CB_BRIDGE_STAYS_DRY);
+    b = wet;
+    CHECK(step(&strict, r, r, -1e-7, v, &b, &released) == CB_BRIDGE_HELD);
+
+    cb_law strict_ok = make_law(0.0, NULL, "strict");
+    b = dry;
+    CHECK(step(&strict_ok, r, r, 0.0, v, &b, &released) == CB_BRIDGE_FORMED);
+    CHECK(step(&strict_ok, r, r, 1e-6, v, &b, &released) == CB_BRIDGE_HELD);
+    cb_law_release(&strict);
+    cb_law_release(&strict_ok);
+}
+
+/* The copy the engine keeps in its pair history: CB_BRIDGE_DOUBLES plain doubles. */
+static void plain_data(const cb_law *law)
+{
+    CHECK(sizeof(cb_bridge) == CB_BRIDGE_DOUBLES * sizeof(double));
+    double history[CB_BRIDGE_DOUBLES] = {0.0, 0.0};
+    cb_bridge b;
+    memcpy(&b, history, sizeof b);
+    double released;
+    CHECK(step(law, 5e-4, 6e-4, -1e-8, 3e-12, &b, &released) == CB_BRIDGE_FORMED);
+    memcpy(history, &b, sizeof b);
+    cb_bridge again;
+    memcpy(&again, history, sizeof again);
+    CHECK(step(law, 5e-4, 6e-4, 1e-6, 0.0, &again, &released) == CB_BRIDGE_HELD);
+    CHECK(same_bits(again.volume, 3e-12));
+}
+
+int main(int argc, char **argv)
+{
+    (void)argc;
+    const double r1 = 0.5e-3, r2 = 0.65e-3, volume = 7.3e-12;
+
+    /* Lian's rule (Richefeu's default), theta = 0 and theta = 30 degrees. */
+    cb_law lian = make_law(0.0, NULL, NULL);
+    CHECK(lian.rupture_in_use == CB_RUPTURE_LIAN);
+    life_cycle(&lian, r1, r2, volume, lian_reference(0.0, volume));
+    cb_law lian30 = make_law(30.0, NULL, NULL);
+    life_cycle(&lian30, r1, r2, volume, lian_reference(30.0, volume));
+    life_cycle(&lian30, 1e-3, 0.25e-3, 1e-13, lian_reference(30.0, 1e-13));
+
+    /* Willett's rule on the same law. */
+    cb_law willett = make_law(0.0, "willett", NULL);
+    CHECK(willett.rupture_in_use == CB_RUPTURE_WILLETT);
+    life_cycle(&willett, r1, r2, volume, willett_reference(0.0, r1, r2, volume));
+    cb_law willett25 = make_law(25.0, "willett", NULL);
+    life_cycle(&willett25, 1e-3, 0.3e-3, 2e-11, willett_reference(25.0, 1e-3, 0.3e-3, 2e-11));
+
+    random_sequences(&lian, 0.0);
+    random_sequences(&lian30, 30.0);
+    errors(&lian);
+    strict_validity();
+    plain_data(&lian);
+
+    cb_law_release(&lian);
+    cb_law_release(&lian30);
+    cb_law_release(&willett);
+    cb_law_release(&willett25);
+    return check_report(argv[0]);
+}
