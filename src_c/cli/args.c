@@ -1,0 +1,289 @@
+/* args.c — option parsing and law construction for the `capbridge` command line.
+ *
+ * A command line is   LAW [keyword value]...  [--option value | --option=value | --flag]...
+ * [POSITIONAL], in that order (law commands), LAMMPS-like: the law keywords are exactly
+ * those of cb_law_configure, so the CLI, pair_style capillary (LAMMPS) and
+ * cohesion_model capillary (LIGGGHTS) accept the same words. Every value is validated
+ * here; the subcommands receive finite numbers in their stated ranges. */
+#include "args.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void vreport(const char *command, const char *format, va_list args)
+{
+    if (command) fprintf(stderr, "capbridge %s: ", command);
+    else fputs("capbridge: ", stderr);
+    vfprintf(stderr, format, args);
+    fputc('\n', stderr);
+}
+
+int cli_usage_error(const char *command, const char *format, ...)
+{
+    va_list args;
+    va_start(args, format);
+    vreport(command, format, args);
+    va_end(args);
+    return CLI_EXIT_USAGE;
+}
+
+int cli_runtime_error(const char *command, const char *format, ...)
+{
+    va_list args;
+    va_start(args, format);
+    vreport(command, format, args);
+    va_end(args);
+    return CLI_EXIT_RUNTIME;
+}
+
+int cli_status_error(const char *command, const char *what, cb_status status)
+{
+    return cli_runtime_error(command, "%s: %s", what, cb_status_message(status));
+}
+
+int cli_parse_number(const char *text, double *value)
+{
+    char *end = NULL;
+    if (!text || !*text) return 0;
+    /* decimal notation only: no blanks, no hexadecimal, no "inf" or "nan" */
+    if (text[strspn(text, "0123456789+-.eE")] != '\0') return 0;
+    double v = strtod(text, &end);
+    if (end == text || *end != '\0' || !isfinite(v)) return 0;
+    *value = v;
+    return 1;
+}
+
+/* A whole number, decimal digits with an optional sign. */
+static int parse_integer(const char *text, long *value)
+{
+    char *end = NULL;
+    if (!text || !*text || isspace((unsigned char)text[0])) return 0;
+    errno = 0;
+    long v = strtol(text, &end, 10);
+    if (end == text || *end != '\0' || errno == ERANGE) return 0;
+    *value = v;
+    return 1;
+}
+
+static int is_option(const char *arg) { return arg[0] == '-' && arg[1] == '-' && arg[2] != '\0'; }
+
+/* The allowed option names, comma separated, into buffer. */
+static const char *option_names(const cli_request *request, char *buffer, size_t size)
+{
+    size_t used = 0;
+    buffer[0] = '\0';
+    for (size_t k = 0; k < request->n_options && used < size; ++k) {
+        int n = snprintf(buffer + used, size - used, "%s%s", k ? ", " : "",
+                         request->options[k].name);
+        if (n < 0) break;
+        used += (size_t)n;
+    }
+    if (request->n_options == 0) snprintf(buffer, size, "(none)");
+    return buffer;
+}
+
+/* Check one value against its option's kind and store it. */
+static int take_value(const cli_request *request, cli_option *option, const char *value)
+{
+    const char *cmd = request->command;
+    double number = 0.0;
+    switch (option->kind) {
+    case CLI_TEXT:
+        if (!*value) return cli_usage_error(cmd, "option %s needs a non-empty value", option->name);
+        option->text = value;
+        break;
+    case CLI_INTEGER: {
+        long integer = 0;
+        if (!parse_integer(value, &integer))
+            return cli_usage_error(cmd, "option %s: '%s' is not a whole number", option->name,
+                                   value);
+        if (integer < option->minimum || integer > option->maximum)
+            return cli_usage_error(cmd, "option %s: %ld is out of range: allowed %ld to %ld",
+                                   option->name, integer, option->minimum, option->maximum);
+        option->integer = integer;
+        option->number = (double)integer;
+        break;
+    }
+    case CLI_FLAG: break;
+    default:
+        if (!cli_parse_number(value, &number))
+            return cli_usage_error(cmd, "option %s: '%s' is not a finite number", option->name,
+                                   value);
+        if (option->kind == CLI_POSITIVE && !(number > 0.0))
+            return cli_usage_error(cmd, "option %s: %s must be > 0 (%s)", option->name, value,
+                                   option->meaning);
+        if (option->kind == CLI_NONNEGATIVE && !(number >= 0.0))
+            return cli_usage_error(cmd, "option %s: %s must be >= 0 (%s)", option->name, value,
+                                   option->meaning);
+        if (option->kind == CLI_FRACTION && !(number >= 0.0 && number <= 1.0))
+            return cli_usage_error(cmd, "option %s: %s must be in [0, 1] (%s)", option->name,
+                                   value, option->meaning);
+        if (option->kind == CLI_ANGLE && !(number >= 0.0 && number < 90.0))
+            return cli_usage_error(cmd, "option %s: %s must satisfy 0 <= angle < 90 degrees (%s)",
+                                   option->name, value, option->meaning);
+        option->number = number;
+        break;
+    }
+    option->given = 1;
+    return CLI_EXIT_OK;
+}
+
+/* LAW [keyword value]... at the front of argv; returns the index after it. */
+static int parse_law(cli_request *request, int argc, char **argv, int *next)
+{
+    const char *cmd = request->command;
+    if (argc < 1 || is_option(argv[0]))
+        return cli_usage_error(cmd, "missing law: the first argument must be one of %s",
+                               cb_law_names());
+    cb_model model;
+    if (cb_model_from_name(argv[0], &model) != CB_OK)
+        return cli_usage_error(cmd, "unknown law '%s': allowed %s", argv[0], cb_law_names());
+    cb_status status = cb_law_init(request->law, model, CLI_DEFAULT_GAMMA, CLI_DEFAULT_THETA);
+    if (status != CB_OK) return cli_status_error(cmd, "law initialisation", status);
+
+    int i = 1;
+    while (i < argc && !is_option(argv[i]) && strcmp(argv[i], "--") != 0) {
+        const char *keyword = argv[i];
+        const char *value = (i + 1 < argc && !is_option(argv[i + 1])) ? argv[i + 1] : NULL;
+        cb_message msg;
+        msg.text[0] = '\0';
+        if (!value) {
+            /* Tell an unknown keyword from a known one without its value: ask the
+             * parser about the keyword with a value no keyword accepts. */
+            cb_law scratch = *request->law;
+            status = cb_law_configure(&scratch, keyword, "", &msg);
+            if (status == CB_ERR_UNKNOWN_KEYWORD && strncmp(msg.text, "unknown keyword", 15) == 0)
+                return cli_usage_error(cmd, "law %s: %s", argv[0], msg.text);
+            return cli_usage_error(cmd, "law %s: keyword '%s' needs a value", argv[0], keyword);
+        }
+        status = cb_law_configure(request->law, keyword, value, &msg);
+        if (status != CB_OK)
+            return cli_usage_error(cmd, "law %s: %s", argv[0],
+                                   msg.text[0] ? msg.text : cb_status_message(status));
+        i += 2;
+    }
+    *next = i;
+    return CLI_EXIT_OK;
+}
+
+static int parse(cli_request *request, int argc, char **argv)
+{
+    const char *cmd = request->command;
+    char names[512];
+    int i = 0;
+    request->positional = NULL;
+    if (request->wants_law) {
+        int code = parse_law(request, argc, argv, &i);
+        if (code != CLI_EXIT_OK) return code;
+    }
+
+    int options_ended = 0;
+    for (; i < argc; ++i) {
+        const char *arg = argv[i];
+        if (!options_ended && strcmp(arg, "--") == 0) {
+            options_ended = 1;
+            continue;
+        }
+        if (options_ended || !is_option(arg)) {
+            if (request->positional_name && !request->positional) {
+                request->positional = arg;
+                continue;
+            }
+            if (request->wants_law)
+                return cli_usage_error(cmd,
+                                       "unexpected argument '%s': law keywords go right after "
+                                       "the law name, options start with --",
+                                       arg);
+            return cli_usage_error(cmd, "unexpected argument '%s'", arg);
+        }
+
+        /* --name value, or --name=value */
+        const char *equals = strchr(arg, '=');
+        size_t length = equals ? (size_t)(equals - arg) : strlen(arg);
+        cli_option *option = NULL;
+        for (size_t k = 0; k < request->n_options; ++k) {
+            const char *name = request->options[k].name;
+            if (strlen(name) == length && strncmp(name, arg, length) == 0) {
+                option = &request->options[k];
+                break;
+            }
+        }
+        if (!option)
+            return cli_usage_error(cmd, "unknown option '%.*s': allowed %s", (int)length, arg,
+                                   option_names(request, names, sizeof names));
+        if (option->given) return cli_usage_error(cmd, "option %s is given twice", option->name);
+        if (option->kind == CLI_FLAG) {
+            if (equals) return cli_usage_error(cmd, "option %s takes no value", option->name);
+            option->given = 1;
+            continue;
+        }
+        const char *value = NULL;
+        if (equals) value = equals + 1;
+        else if (i + 1 < argc && !is_option(argv[i + 1])) value = argv[++i];
+        else
+            return cli_usage_error(cmd, "option %s needs a value (%s)", option->name,
+                                   option->meaning);
+        int code = take_value(request, option, value);
+        if (code != CLI_EXIT_OK) return code;
+    }
+
+    for (size_t k = 0; k < request->n_options; ++k) {
+        const cli_option *option = &request->options[k];
+        if (option->required && !option->given)
+            return cli_usage_error(cmd, "missing option %s (%s)", option->name, option->meaning);
+    }
+    return CLI_EXIT_OK;
+}
+
+int cli_parse(cli_request *request, int argc, char **argv, int *exit_code)
+{
+    for (int i = 1; i < argc && strcmp(argv[i], "--") != 0; ++i) {
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            fputs(request->usage, stdout);
+            if (request->wants_law) cli_print_law_help(stdout);
+            *exit_code = CLI_EXIT_OK;
+            return 0;
+        }
+    }
+    *exit_code = argc > 0 ? parse(request, argc - 1, argv + 1) : CLI_EXIT_USAGE;
+    return *exit_code == CLI_EXIT_OK;
+}
+
+int cli_prepare_law(const char *command, cb_law *law)
+{
+    cb_message msg;
+    msg.text[0] = '\0';
+    cb_status status = cb_law_prepare(law, &msg);
+    if (status == CB_OK) return CLI_EXIT_OK;
+    return cli_runtime_error(command, "law %s: %s", cb_model_name(law->model),
+                             msg.text[0] ? msg.text : cb_status_message(status));
+}
+
+void cli_print_law_help(FILE *out)
+{
+    fprintf(out,
+            "\nLAW is one of:\n  %s\n"
+            "Law keywords (the same as in the LAMMPS and LIGGGHTS bindings):\n"
+            "  gamma N/m        surface tension, > 0 (default %g, water)\n"
+            "  theta DEG        contact angle, 0 <= theta < 90 degrees (default 0)\n"
+            "  rupture RULE     lian | willett | default (table also: exact)\n"
+            "  overlap RULE     contact | none: the force in overlap (default contact)\n"
+            "  validity RULE    extend | strict: outside the law's validity (default extend)\n"
+            "  c VALUE          Richefeu's constant, richefeu only (default 0.9)\n",
+            cb_law_names(), CLI_DEFAULT_GAMMA);
+}
+
+void cli_print_number(FILE *out, double value) { fprintf(out, "%.17g", value); }
+
+void cli_print_row(FILE *out, size_t n, const double *values)
+{
+    for (size_t k = 0; k < n; ++k) {
+        if (k) fputc(',', out);
+        cli_print_number(out, values[k]);
+    }
+    fputc('\n', out);
+}

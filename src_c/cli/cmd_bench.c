@@ -1,0 +1,39 @@
+/* cmd_bench.c — `capbridge bench`: the cost per cb_force call of every law, measured in
+ * one run on the same sample of pairs, and its ratio to the cheapest closed-form law.
+ * The table law's target is a ratio of at most 2. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "capbridge.h"
+#include "law_cost.h"
+
+int cmd_bench(int argc, char **argv)
+{
+    if (argc > 1) {
+        if (strcmp(argv[1], "--help") == 0) {
+            printf("usage: capbridge bench\nnanoseconds per force call of every law (water, "
+                   "theta = 0) and the ratio to the cheapest closed-form law, one run\n");
+            return 0;
+        }
+        fprintf(stderr, "capbridge bench: unknown argument '%s': bench takes none\n", argv[1]);
+        return 2;
+    }
+    double ns[CB_MODEL_COUNT], cheapest = HUGE_VAL;
+    for (int m = 0; m < CB_MODEL_COUNT; ++m) {
+        cb_law law;
+        cb_message msg;
+        if (cb_law_init(&law, (cb_model)m, 0.0728, 0.0) != CB_OK ||
+            cb_law_prepare(&law, &msg) != CB_OK) {
+            fprintf(stderr, "capbridge bench: %s: %s\n", cb_model_name((cb_model)m), msg.text);
+            return 1;
+        }
+        ns[m] = cb_law_cost_ns(&law);
+        cb_law_release(&law);
+        if (m != CB_MODEL_TABLE && ns[m] < cheapest) cheapest = ns[m];
+    }
+    printf("law,ns_per_call,ratio_to_cheapest_closed_form\n");
+    for (int m = 0; m < CB_MODEL_COUNT; ++m)
+        printf("%s,%.2f,%.3f\n", cb_model_name((cb_model)m), ns[m], ns[m] / cheapest);
+    return 0;
+}

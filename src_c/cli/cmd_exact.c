@@ -1,0 +1,113 @@
+/* cmd_exact.c — `capbridge exact`: the exact Laplace-Young bridge (cb_exact_solve,
+ * cb_exact_curve, cb_exact_rupture), the reference every law is measured against. */
+#include "args.h"
+#include "commands.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+#define PI 3.14159265358979323846
+
+static const char usage[] =
+    "usage: capbridge exact --r1 M --r2 M --volume M3 [--theta DEG] [--gamma N/m]\n"
+    "                       [--steps N] (--gap M | --curve N | --rupture)\n"
+    "\n"
+    "The exact Laplace-Young bridge between two spheres (no gravity), on the branch\n"
+    "connected to contact.\n"
+    "  --theta DEG  contact angle, 0 <= theta < 90 (default 0)\n"
+    "  --gamma N/m  surface tension, > 0 (default 0.0728)\n"
+    "  --steps N    integration steps along the profile (default 0: the solver's own)\n"
+    "  --gap M      the bridge at one gap, 0 <= gap <= rupture distance\n"
+    "  --curve N    N >= 2 gaps evenly spaced from 0 to the rupture distance inclusive\n"
+    "  --rupture    the bridge at the rupture distance (its gap is the distance)\n"
+    "Prints CSV with a header:\n"
+    "  gap,force,force_contact1,force_contact2,filling_angle1,filling_angle2,\n"
+    "  pressure,neck_radius,volume\n"
+    "force [N] is the attraction at the neck, force_contact1/2 the same at the contact\n"
+    "lines (a check), filling angles in rad, pressure = p_liquid - p_gas [Pa],\n"
+    "volume the volume recovered from the profile [m^3].\n";
+
+enum { R1, R2, VOLUME, THETA, GAMMA, STEPS, GAP, CURVE, RUPTURE, N_OPTIONS };
+
+static void print_bridge(const cb_exact_bridge *b)
+{
+    double row[9] = {b->gap,            b->force,          b->force_contact1,
+                     b->force_contact2, b->filling_angle1, b->filling_angle2,
+                     b->pressure,       b->neck_radius,    b->volume};
+    cli_print_row(stdout, 9, row);
+}
+
+static const char header[] = "gap,force,force_contact1,force_contact2,filling_angle1,"
+                             "filling_angle2,pressure,neck_radius,volume";
+
+int cmd_exact(int argc, char **argv)
+{
+    const char *name = "exact";
+    cli_option options[N_OPTIONS] = {
+        CLI_OPTION_R1, CLI_OPTION_R2, CLI_OPTION_VOLUME,
+        {.name = "--theta", .kind = CLI_ANGLE, .meaning = "contact angle [degrees]",
+         .number = CLI_DEFAULT_THETA},
+        {.name = "--gamma", .kind = CLI_POSITIVE, .meaning = "surface tension [N/m]",
+         .number = CLI_DEFAULT_GAMMA},
+        {.name = "--steps", .kind = CLI_INTEGER, .meaning = "integration steps",
+         .minimum = 0, .maximum = 100000000L},
+        {.name = "--gap", .kind = CLI_NONNEGATIVE, .meaning = "gap [m]"},
+        {.name = "--curve", .kind = CLI_INTEGER, .meaning = "number of gaps",
+         .minimum = 2, .maximum = 1000000L},
+        {.name = "--rupture", .kind = CLI_FLAG, .meaning = "the bridge at rupture"},
+    };
+    cli_request request = {name, usage, 0, NULL, options, N_OPTIONS, NULL, NULL};
+    int code;
+    if (!cli_parse(&request, argc, argv, &code)) return code;
+    int modes = options[GAP].given + options[CURVE].given + options[RUPTURE].given;
+    if (modes != 1)
+        return cli_usage_error(name, "give exactly one of --gap, --curve, --rupture (%s)",
+                               modes ? "several given" : "none given");
+
+    cb_exact_problem problem;
+    problem.r1 = options[R1].number;
+    problem.r2 = options[R2].number;
+    problem.volume = options[VOLUME].number;
+    problem.contact_angle = options[THETA].number * PI / 180.0;
+    problem.surface_tension = options[GAMMA].number;
+    problem.steps = (int)options[STEPS].integer;
+
+    cb_exact_bridge bridge;
+    cb_status status;
+    if (options[GAP].given) {
+        status = cb_exact_solve(&problem, options[GAP].number, &bridge);
+        if (status != CB_OK) return cli_status_error(name, "cb_exact_solve", status);
+        puts(header);
+        print_bridge(&bridge);
+        return CLI_EXIT_OK;
+    }
+
+    double rupture = 0.0;
+    status = cb_exact_rupture(&problem, &rupture, &bridge);
+    if (status != CB_OK) return cli_status_error(name, "cb_exact_rupture", status);
+    if (options[RUPTURE].given) {
+        puts(header);
+        print_bridge(&bridge);
+        return CLI_EXIT_OK;
+    }
+
+    size_t n = (size_t)options[CURVE].integer;
+    double *gaps = malloc(n * sizeof *gaps);
+    cb_exact_bridge *bridges = malloc(n * sizeof *bridges);
+    if (!gaps || !bridges) {
+        free(gaps);
+        free(bridges);
+        return cli_status_error(name, "--curve", CB_ERR_NO_MEMORY);
+    }
+    for (size_t i = 0; i < n; ++i)
+        gaps[i] = i == n - 1 ? rupture : rupture * ((double)i / (double)(n - 1));
+    status = cb_exact_curve(&problem, n, gaps, bridges);
+    if (status != CB_OK) code = cli_status_error(name, "cb_exact_curve", status);
+    else {
+        puts(header);
+        for (size_t i = 0; i < n; ++i) print_bridge(&bridges[i]);
+    }
+    free(gaps);
+    free(bridges);
+    return code;
+}

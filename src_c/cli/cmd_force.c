@@ -1,0 +1,52 @@
+/* cmd_force.c — `capbridge force`: one point of a law.
+ * CSV: gap,force,stiffness,rupture_distance (force >= 0 is the attraction [N],
+ * stiffness = dF/dgap [N/m]). */
+#include "args.h"
+#include "commands.h"
+
+#include <stdio.h>
+
+static const char usage[] =
+    "usage: capbridge force LAW [keyword value]... --r1 M --r2 M --volume M3 --gap M\n"
+    "\n"
+    "The capillary force of LAW between spheres of radii r1, r2 holding a bridge of\n"
+    "the given volume at the given gap (surface-to-surface distance; < 0 is an overlap).\n"
+    "Prints one CSV row with a header: gap,force,stiffness,rupture_distance\n"
+    "  force      attraction [N], >= 0; 0 beyond the rupture distance\n"
+    "  stiffness  dF/dgap [N/m]\n"
+    "Example: capbridge force richefeu theta 10 --r1 1e-3 --r2 5e-4 --volume 1e-11 --gap 2e-5\n";
+
+enum { R1, R2, VOLUME, GAP, N_OPTIONS };
+
+int cmd_force(int argc, char **argv)
+{
+    const char *name = "force";
+    cli_option options[N_OPTIONS] = {
+        CLI_OPTION_R1, CLI_OPTION_R2, CLI_OPTION_VOLUME,
+        {.name = "--gap", .kind = CLI_NUMBER, .required = 1,
+         .meaning = "surface-to-surface distance [m], < 0 is an overlap"},
+    };
+    cb_law law;
+    cli_request request = {name, usage, 1, &law, options, N_OPTIONS, NULL, NULL};
+    int code;
+    if (!cli_parse(&request, argc, argv, &code)) return code;
+    code = cli_prepare_law(name, &law);
+    if (code != CLI_EXIT_OK) return code;
+
+    double r1 = options[R1].number, r2 = options[R2].number, volume = options[VOLUME].number;
+    double gap = options[GAP].number;
+    double rupture = 0.0, force = 0.0, stiffness = 0.0;
+    cb_status status = cb_rupture_distance(&law, r1, r2, volume, &rupture);
+    if (status != CB_OK) code = cli_status_error(name, "rupture distance", status);
+    else {
+        status = cb_force(&law, r1, r2, volume, gap, &force, &stiffness);
+        if (status != CB_OK) code = cli_status_error(name, "force", status);
+    }
+    if (code == CLI_EXIT_OK) {
+        double row[4] = {gap, force, stiffness, rupture};
+        puts("gap,force,stiffness,rupture_distance");
+        cli_print_row(stdout, 4, row);
+    }
+    cb_law_release(&law);
+    return code;
+}

@@ -1,0 +1,237 @@
+/* cmd_report.c — `capbridge report`: every law's error against the exact Laplace-Young
+ * solution (reference_data/cases.csv and grid.csv) and its cost per call, measured in
+ * the same run. Prints a Markdown table; --csv writes the numbers. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "capbridge.h"
+#include "law_cost.h"
+#include "reference.h"
+
+#define CB_PI 3.14159265358979323846
+
+#ifndef CAPBRIDGE_REFERENCE_DIR
+#define CAPBRIDGE_REFERENCE_DIR "reference_data"
+#endif
+
+/* Max and RMS of relative errors. */
+typedef struct error_sum {
+    double max, sum_squares;
+    long count;
+} error_sum;
+
+static void add_error(error_sum *e, double relative)
+{
+    if (relative > e->max) e->max = relative;
+    e->sum_squares += relative * relative;
+    e->count++;
+}
+
+static double rms(const error_sum *e) { return e->count ? sqrt(e->sum_squares / e->count) : NAN; }
+
+/* Errors of one law over one reference set: force and rupture distance, over all
+ * configurations and inside the law's stated validity. */
+typedef struct set_errors {
+    error_sum force_all, force_valid, rupture_all, rupture_valid;
+    long points, no_bridge; /* exact bridge exists but the law has none (gap > its rupture) */
+} set_errors;
+
+static int inside_validity(const cb_law *law, const cb_case *c)
+{
+    cb_validity v = cb_law_validity(law);
+    double r = cb_radius_of(v.radius, c->r1, c->r2);
+    double scaled = c->volume / (r * r * r);
+    double ratio = c->r1 > c->r2 ? c->r1 / c->r2 : c->r2 / c->r1;
+    return scaled >= v.volume_min && scaled <= v.volume_max &&
+           c->contact_angle * CB_PI / 180.0 <= v.contact_angle_max + 1e-12 &&
+           ratio <= v.size_ratio_max * (1 + 1e-12);
+}
+
+static int set_law(cb_law *law, const cb_case *c)
+{
+    cb_message msg;
+    char value[64];
+    snprintf(value, sizeof value, "%.17g", c->surface_tension);
+    if (cb_law_configure(law, "gamma", value, &msg) != CB_OK) goto fail;
+    snprintf(value, sizeof value, "%.17g", c->contact_angle);
+    if (cb_law_configure(law, "theta", value, &msg) != CB_OK) goto fail;
+    if (cb_law_prepare(law, &msg) != CB_OK) goto fail;
+    return 1;
+fail:
+    fprintf(stderr, "capbridge report: %s: %s\n", cb_model_name(law->model), msg.text);
+    return 0;
+}
+
+static int measure_set(cb_law *law, const cb_reference_curve_data *curves, long n,
+                       set_errors *e)
+{
+    memset(e, 0, sizeof *e);
+    for (long i = 0; i < n; ++i) {
+        const cb_case *c = &curves[i].config;
+        if (!set_law(law, c)) return 0;
+        int valid = inside_validity(law, c);
+        double rupture = 0.0;
+        if (cb_rupture_distance(law, c->r1, c->r2, c->volume, &rupture) != CB_OK) return 0;
+        double rupture_error = fabs(rupture - curves[i].rupture) / curves[i].rupture;
+        add_error(&e->rupture_all, rupture_error);
+        if (valid) add_error(&e->rupture_valid, rupture_error);
+        for (int p = 0; p < CB_CURVE_POINTS; ++p) {
+            double gap = curves[i].gap[p], exact = curves[i].force[p];
+            e->points++;
+            if (gap > rupture) {
+                e->no_bridge++;
+                continue;
+            }
+            double force = 0.0;
+            cb_status status = cb_force(law, c->r1, c->r2, c->volume, gap, &force, NULL);
+            if (status == CB_ERR_NO_BRIDGE) {
+                e->no_bridge++;
+                continue;
+            }
+            if (status != CB_OK) {
+                fprintf(stderr, "capbridge report: %s at %s gap %g: %s\n",
+                        cb_model_name(law->model), c->name, gap, cb_status_message(status));
+                return 0;
+            }
+            double relative = fabs(force - exact) / exact;
+            add_error(&e->force_all, relative);
+            if (valid) add_error(&e->force_valid, relative);
+        }
+    }
+    return 1;
+}
+
+typedef struct law_report {
+    cb_model model;
+    set_errors cases, grid;
+    double ns_per_call;
+} law_report;
+
+static void print_csv(FILE *out, const law_report *r, int n, double cheapest)
+{
+    fprintf(out, "law,force_max_cases,force_rms_cases,force_max_cases_valid,"
+                 "force_rms_cases_valid,rupture_max_cases,force_max_grid,force_rms_grid,"
+                 "force_max_grid_valid,force_rms_grid_valid,grid_points_valid,"
+                 "rupture_max_grid,rupture_max_grid_valid,no_bridge_fraction_grid,"
+                 "ns_per_call,cost_ratio\n");
+    for (int i = 0; i < n; ++i) {
+        const set_errors *c = &r[i].cases, *g = &r[i].grid;
+        fprintf(out, "%s,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%ld,%.6g,%.6g,%.6g,%.4g,%.4g\n",
+                cb_model_name(r[i].model), c->force_all.max, rms(&c->force_all),
+                c->force_valid.max, rms(&c->force_valid), c->rupture_all.max,
+                g->force_all.max, rms(&g->force_all), g->force_valid.max, rms(&g->force_valid),
+                g->force_valid.count, g->rupture_all.max, g->rupture_valid.max,
+                (double)g->no_bridge / (double)g->points, r[i].ns_per_call,
+                r[i].ns_per_call / cheapest);
+    }
+}
+
+static void percent(char *text, size_t size, double value)
+{
+    if (isnan(value)) snprintf(text, size, "–");
+    else snprintf(text, size, "%.3g %%", 100.0 * value);
+}
+
+static void print_markdown(const law_report *r, int n, double cheapest)
+{
+    printf("| law | force error, 13 cases: max / RMS | grid, all: max / RMS | "
+           "grid, inside validity: max / RMS | rupture distance error: cases / grid | "
+           "ns per call | cost vs cheapest |\n");
+    printf("|---|---|---|---|---|---|---|\n");
+    for (int i = 0; i < n; ++i) {
+        const set_errors *c = &r[i].cases, *g = &r[i].grid;
+        char a[8][32];
+        percent(a[0], 32, c->force_all.max);
+        percent(a[1], 32, rms(&c->force_all));
+        percent(a[2], 32, g->force_all.max);
+        percent(a[3], 32, rms(&g->force_all));
+        percent(a[4], 32, g->force_valid.max);
+        percent(a[5], 32, rms(&g->force_valid));
+        percent(a[6], 32, c->rupture_all.max);
+        percent(a[7], 32, g->rupture_all.max);
+        printf("| %s | %s / %s | %s / %s | %s / %s (%ld points) | %s / %s | %.1f | %.2f× |\n",
+               cb_model_name(r[i].model), a[0], a[1], a[2], a[3], a[4], a[5],
+               g->force_valid.count, a[6], a[7], r[i].ns_per_call,
+               r[i].ns_per_call / cheapest);
+    }
+}
+
+/* The cost of each law with its defaults (water, theta = 0), all in this run. */
+static double measure_cost(cb_model model)
+{
+    cb_law law;
+    cb_message msg;
+    if (cb_law_init(&law, model, 0.0728, 0.0) != CB_OK || cb_law_prepare(&law, &msg) != CB_OK)
+        return NAN;
+    double ns = cb_law_cost_ns(&law);
+    cb_law_release(&law);
+    return ns;
+}
+
+int cmd_report(int argc, char **argv)
+{
+    const char *reference_dir = CAPBRIDGE_REFERENCE_DIR, *csv_path = NULL;
+    for (int i = 1; i < argc; ++i) {
+        if (strcmp(argv[i], "--help") == 0) {
+            printf("usage: capbridge report [--reference DIR] [--csv FILE]\n"
+                   "Force and rupture-distance errors of every law against the exact\n"
+                   "Laplace-Young curves in DIR/cases.csv and DIR/grid.csv, and each law's\n"
+                   "cost per call measured in this run.\n");
+            return 0;
+        } else if (strcmp(argv[i], "--reference") == 0 && i + 1 < argc) {
+            reference_dir = argv[++i];
+        } else if (strcmp(argv[i], "--csv") == 0 && i + 1 < argc) {
+            csv_path = argv[++i];
+        } else {
+            fprintf(stderr, "capbridge report: unknown option or missing value '%s': allowed "
+                            "--reference DIR, --csv FILE\n", argv[i]);
+            return 2;
+        }
+    }
+    char path[4096];
+    cb_reference_curve_data *cases = NULL, *grid = NULL;
+    snprintf(path, sizeof path, "%s/cases.csv", reference_dir);
+    long case_count = cb_reference_read(path, &cases);
+    snprintf(path, sizeof path, "%s/grid.csv", reference_dir);
+    long grid_count = case_count < 0 ? -1 : cb_reference_read(path, &grid);
+    if (case_count < 0 || grid_count < 0) {
+        free(cases);
+        return 1;
+    }
+
+    law_report reports[CB_MODEL_COUNT];
+    int ok = 1;
+    double cheapest = HUGE_VAL;
+    for (int m = 0; m < CB_MODEL_COUNT && ok; ++m) {
+        law_report *r = &reports[m];
+        r->model = (cb_model)m;
+        cb_law law;
+        ok = cb_law_init(&law, r->model, 0.0728, 0.0) == CB_OK &&
+             measure_set(&law, cases, case_count, &r->cases) &&
+             measure_set(&law, grid, grid_count, &r->grid);
+        cb_law_release(&law);
+        r->ns_per_call = measure_cost(r->model);
+        if (r->model != CB_MODEL_TABLE && r->ns_per_call < cheapest) cheapest = r->ns_per_call;
+    }
+    free(cases);
+    free(grid);
+    if (!ok) return 1;
+
+    printf("Errors against the exact Laplace-Young solution (relative, in %%), %ld cases and "
+           "%ld grid configurations x %d gaps; cost per cb_force call measured in this run, "
+           "relative to the cheapest closed-form law.\n\n",
+           case_count, grid_count, CB_CURVE_POINTS);
+    print_markdown(reports, CB_MODEL_COUNT, cheapest);
+    if (csv_path) {
+        FILE *out = fopen(csv_path, "w");
+        if (!out) {
+            fprintf(stderr, "capbridge report: cannot write '%s'\n", csv_path);
+            return 1;
+        }
+        print_csv(out, reports, CB_MODEL_COUNT, cheapest);
+        fclose(out);
+    }
+    return 0;
+}

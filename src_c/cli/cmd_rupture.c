@@ -1,0 +1,37 @@
+/* cmd_rupture.c — `capbridge rupture`: the rupture distance of a law's bridge. */
+#include "args.h"
+#include "commands.h"
+
+#include <stdio.h>
+
+static const char usage[] =
+    "usage: capbridge rupture LAW [keyword value]... --r1 M --r2 M --volume M3\n"
+    "\n"
+    "The rupture (debonding) distance [m] of a bridge of the given volume between\n"
+    "spheres of radii r1, r2, under the law's rupture rule (keyword rupture).\n"
+    "Prints CSV with a header: rupture_distance\n";
+
+enum { R1, R2, VOLUME, N_OPTIONS };
+
+int cmd_rupture(int argc, char **argv)
+{
+    const char *name = "rupture";
+    cli_option options[N_OPTIONS] = {CLI_OPTION_R1, CLI_OPTION_R2, CLI_OPTION_VOLUME};
+    cb_law law;
+    cli_request request = {name, usage, 1, &law, options, N_OPTIONS, NULL, NULL};
+    int code;
+    if (!cli_parse(&request, argc, argv, &code)) return code;
+    code = cli_prepare_law(name, &law);
+    if (code != CLI_EXIT_OK) return code;
+
+    double rupture = 0.0;
+    cb_status status = cb_rupture_distance(&law, options[R1].number, options[R2].number,
+                                           options[VOLUME].number, &rupture);
+    if (status != CB_OK) code = cli_status_error(name, "rupture distance", status);
+    else {
+        puts("rupture_distance");
+        cli_print_row(stdout, 1, &rupture);
+    }
+    cb_law_release(&law);
+    return code;
+}

@@ -1,0 +1,139 @@
+#!/bin/sh
+# capbridge command-line errors: exit status 2 and one line on stderr that names what is
+# wrong (and what is allowed); --help; run-time failures exit 1 with the core's message.
+. "$(dirname "$0")/lib.sh"
+
+# expect CODE LABEL NEEDLE... -- ARGUMENTS...: the exit status, and for CODE 2 one line on
+# stderr holding every NEEDLE
+expect() {
+    want=$1 label=$2
+    shift 2
+    needles=
+    while [ "$1" != "--" ]; do
+        needles="$needles
+$1"
+        shift
+    done
+    shift
+    "$CB" "$@" >"$TMP/out" 2>"$TMP/err" </dev/null
+    code=$?
+    checks=$((checks + 1))
+    [ "$code" -eq "$want" ] || { fail "$label: exit $code, expected $want ($(cat "$TMP/err"))"; return; }
+    if [ "$want" -eq 2 ]; then
+        checks=$((checks + 1))
+        [ "$(wc -l <"$TMP/err")" -eq 1 ] || fail "$label: stderr is not one line: $(cat "$TMP/err")"
+        checks=$((checks + 1))
+        [ ! -s "$TMP/out" ] || fail "$label: printed on stdout: $(head -2 "$TMP/out")"
+    fi
+    printf '%s\n' "$needles" | while IFS= read -r needle; do
+        [ -n "$needle" ] || continue
+        grep -qF -- "$needle" "$TMP/err" || echo "stderr lacks '$needle': $(cat "$TMP/err")"
+    done >"$TMP/why"
+    checks=$((checks + 1))
+    [ ! -s "$TMP/why" ] || fail "$label: $(cat "$TMP/why")"
+}
+
+G="--r1 1e-3 --r2 1e-3 --volume 1e-11"
+LAWS="richefeu, willett, willett/reduced, rabinovich, rabinovich/uncorrected, weigert, soulie, table"
+
+# subcommands
+expect 2 "no subcommand" "missing subcommand" "force, curve, rupture, exact, pulloff, replay" --
+expect 2 "unknown subcommand" "unknown subcommand 'forse'" "allowed force, curve" -- forse richefeu $G --gap 0
+expect 2 "help for an unknown subcommand" "unknown subcommand 'bogus'" -- help bogus
+
+# the law and its keywords
+expect 2 "unknown law" "unknown law 'wilet'" "allowed $LAWS" -- force wilet $G --gap 0
+expect 2 "missing law" "missing law" "$LAWS" -- force $G --gap 0
+expect 2 "unknown keyword" "unknown keyword 'gama'" "allowed gamma, theta, rupture, overlap, validity, c" -- force richefeu gama 0.07 $G --gap 0
+expect 2 "keyword without value before an option" "keyword 'gamma' needs a value" -- force richefeu gamma $G --gap 0
+expect 2 "keyword without value at the end" "keyword 'theta' needs a value" -- rupture richefeu theta
+expect 2 "unknown keyword without value" "unknown keyword 'bogus'" -- force richefeu bogus $G --gap 0
+expect 2 "theta out of range" "theta = 95 degrees" "0 <= theta < 90" -- force richefeu theta 95 $G --gap 0
+expect 2 "theta not a number" "theta '1e-3x' is not a number" -- force richefeu theta 1e-3x $G --gap 0
+expect 2 "gamma nan" "gamma 'nan' is not a number" -- force richefeu gamma nan $G --gap 0
+expect 2 "gamma empty" "gamma '' is not a number" -- force richefeu gamma "" $G --gap 0
+expect 2 "gamma negative" "gamma = -0.07" "> 0" -- curve richefeu gamma -0.07 $G
+expect 2 "unknown rupture rule" "rupture 'foo'" "allowed lian, willett, default" -- force richefeu rupture foo $G --gap 0
+expect 2 "unknown overlap rule" "overlap 'partial'" "allowed contact, none" -- force richefeu overlap partial $G --gap 0
+expect 2 "unknown validity rule" "validity 'loose'" "allowed extend, strict" -- force richefeu validity loose $G --gap 0
+expect 2 "c for another law" "keyword 'c'" "richefeu only" -- force willett c 0.9 $G --gap 0
+expect 2 "c not positive" "c '0'" "> 0" -- force richefeu c 0 $G --gap 0
+expect 2 "a law keyword after the options" "unexpected argument 'theta'" "right after the law name" -- force richefeu $G --gap 0 theta 10
+
+# options
+expect 2 "unknown option" "unknown option '--gapp'" "allowed --r1, --r2, --volume, --gap" -- force richefeu $G --gapp 0
+expect 2 "unknown option with =" "unknown option '--radius'" -- force richefeu --radius=1e-3 $G --gap 0
+expect 2 "option without value at the end" "option --gap needs a value" -- force richefeu $G --gap
+expect 2 "option followed by an option" "option --r1 needs a value" -- force richefeu --r1 --r2 1e-3 --volume 1e-11 --gap 0
+expect 2 "trailing garbage" "option --gap: '1e-3x' is not a finite number" -- force richefeu $G --gap 1e-3x
+expect 2 "empty number" "option --gap: '' is not a finite number" -- force richefeu $G --gap ""
+expect 2 "empty number with =" "option --gap: '' is not a finite number" -- force richefeu $G --gap=
+expect 2 "nan" "option --gap: 'nan' is not a finite number" -- force richefeu $G --gap nan
+expect 2 "inf" "option --volume: 'inf' is not a finite number" -- force richefeu --r1 1e-3 --r2 1e-3 --volume inf --gap 0
+expect 2 "a blank before a number" "option --gap: ' 1' is not a finite number" -- force richefeu $G --gap " 1"
+expect 2 "hexadecimal" "option --r1: '0x1p-10' is not a finite number" -- force richefeu --r1 0x1p-10 --r2 1e-3 --volume 1e-11 --gap 0
+expect 2 "missing --volume" "missing option --volume" "liquid bridge volume" -- force richefeu --r1 1e-3 --r2 1e-3 --gap 0
+expect 2 "missing --gap" "missing option --gap" -- force richefeu $G
+expect 2 "negative radius" "option --r1: -1e-3 must be > 0" -- force richefeu --r1 -1e-3 --r2 1e-3 --volume 1e-11 --gap 0
+expect 2 "zero volume" "option --volume: 0 must be > 0" -- rupture richefeu --r1 1e-3 --r2 1e-3 --volume 0
+expect 2 "option twice" "option --gap is given twice" -- force richefeu $G --gap 0 --gap 1e-5
+expect 2 "stray argument" "unexpected argument 'extra'" -- force richefeu $G --gap 0 extra
+expect 2 "--points 1" "option --points: 1 is out of range" "allowed 2 to" -- curve richefeu $G --points 1
+expect 2 "--points 2.5" "option --points: '2.5' is not a whole number" -- curve richefeu $G --points 2.5
+expect 2 "--points huge" "option --points: '99999999999999999999999' is not a whole number" -- curve richefeu $G --points 99999999999999999999999
+expect 2 "empty range" "--from 0.0001 must be below --to 1.0000000000000001e-05" -- curve richefeu $G --from 1e-4 --to 1e-5
+expect 2 "--damping 1.5" "option --damping: 1.5 must be in [0, 1]" -- pulloff richefeu $G --damping 1.5
+expect 2 "--velocity 0" "option --velocity: 0 must be > 0" -- pulloff richefeu $G --velocity 0
+expect 2 "--dt -1" "option --dt: -1 must be > 0" -- pulloff richefeu $G --dt -1
+expect 2 "--steps-after-rupture -1" "option --steps-after-rupture: -1 is out of range" -- pulloff richefeu $G --steps-after-rupture -1
+expect 2 "--density x" "option --density: 'x' is not a finite number" -- pulloff richefeu $G --density x
+expect 2 "flag with a value" "option --rupture takes no value" -- exact $G --rupture=1
+
+# exact
+expect 2 "exact without a mode" "give exactly one of --gap, --curve, --rupture (none given)" -- exact $G
+expect 2 "exact with two modes" "give exactly one of --gap, --curve, --rupture (several given)" -- exact $G --gap 0 --rupture
+expect 2 "exact --theta 90" "option --theta: 90 must satisfy 0 <= angle < 90" -- exact $G --theta 90 --rupture
+expect 2 "exact --curve 1" "option --curve: 1 is out of range" -- exact $G --curve 1
+expect 2 "exact negative gap" "option --gap: -1e-6 must be >= 0" -- exact $G --gap -1e-6
+expect 2 "exact takes no law" "unexpected argument 'richefeu'" -- exact richefeu $G --rupture
+
+# replay
+printf 'a b c d e\n1e-3 1e-3 1e-11 0 0\n' >"$TMP/table"
+expect 2 "replay without --columns" "missing option --columns" -- replay richefeu --tolerance 1 "$TMP/table"
+expect 2 "replay without FILE" "missing FILE" -- replay richefeu --columns r1=1,r2=2,volume=3,gap=4,force=5
+expect 2 "replay, two files" "unexpected argument" -- replay richefeu --columns r1=1,r2=2,volume=3,gap=4,force=5 "$TMP/table" "$TMP/table"
+expect 2 "replay, unknown quantity" "unknown quantity 'vol'" "allowed r1, r2, volume, gap, distance, force" -- replay richefeu --columns r1=1,r2=2,vol=3,gap=4,force=5 "$TMP/table"
+expect 2 "replay, column 0" "--columns r1=0" "whole number from 1" -- replay richefeu --columns r1=0,r2=2,volume=3,gap=4,force=5 "$TMP/table"
+expect 2 "replay, column x" "--columns r2=x" -- replay richefeu --columns r1=1,r2=x,volume=3,gap=4,force=5 "$TMP/table"
+expect 2 "replay, no =" "--columns entry 'r1'" "NAME=INDEX" -- replay richefeu --columns r1,r2=2 "$TMP/table"
+expect 2 "replay, empty entry" "an empty entry" -- replay richefeu --columns r1=1,,r2=2 "$TMP/table"
+expect 2 "replay, twice" "'r1' is given twice" -- replay richefeu --columns r1=1,r1=2 "$TMP/table"
+expect 2 "replay, no force" "--columns lacks force=INDEX" -- replay richefeu --columns r1=1,r2=2,volume=3,gap=4 "$TMP/table"
+expect 2 "replay, gap and distance" "exactly one of gap=INDEX, distance=INDEX" -- replay richefeu --columns r1=1,r2=2,volume=3,gap=4,distance=4,force=5 "$TMP/table"
+expect 2 "replay, no radius" "missing r2" "--r2" -- replay richefeu --columns r1=1,volume=3,gap=4,force=5 "$TMP/table"
+expect 2 "replay, column and constant" "r1 is both a column" "--r1" -- replay richefeu --r1 1e-3 --columns r1=1,r2=2,volume=3,gap=4,force=5 "$TMP/table"
+expect 2 "replay, --tolerance -1" "option --tolerance: -1 must be >= 0" -- replay richefeu --tolerance -1 --columns r1=1,r2=2,volume=3,gap=4,force=5 "$TMP/table"
+
+# help: exit 0, usage on stdout
+for sub in force curve rupture exact pulloff replay; do
+    for form in "$sub --help" "$sub -h" "help $sub" "$sub richefeu --help"; do
+        # shellcheck disable=SC2086
+        "$CB" $form >"$TMP/out" 2>"$TMP/err"
+        code=$?
+        checks=$((checks + 1))
+        [ "$code" -eq 0 ] && grep -q "^usage: capbridge $sub" "$TMP/out" ||
+            fail "'capbridge $form': exit $code, $(head -1 "$TMP/out")"
+    done
+done
+"$CB" --help >"$TMP/out"
+checks=$((checks + 1))
+grep -q "^  pulloff" "$TMP/out" || fail "capbridge --help lacks the subcommand list"
+"$CB" force --help >"$TMP/out"
+checks=$((checks + 1))
+grep -qF "$LAWS" "$TMP/out" || fail "capbridge force --help lacks the laws"
+
+# run-time failures: exit 1 with the core's message
+expect 1 "no exact bridge beyond rupture" "no bridge" -- exact $G --gap 1e-2
+expect 1 "validity strict outside the validity" "validity" -- force richefeu theta 30 validity strict $G --gap 0
+
+finish
