@@ -257,7 +257,7 @@ cb_validity cb_law_validity(const cb_law *law)
     }
 }
 
-cb_pair cb_pair_make(double r1, double r2, double volume)
+cb_pair cb_pair_make(const cb_law *law, double r1, double r2, double volume)
 {
     cb_pair pair;
     pair.r1 = r1;
@@ -267,6 +267,7 @@ cb_pair cb_pair_make(double r1, double r2, double volume)
     pair.r_harmonic = cb_radius_harmonic(r1, r2);
     pair.r_geometric = cb_radius_geometric(r1, r2);
     pair.volume = volume;
+    if (law->model == CB_MODEL_TABLE) cb_table_locate(law, &pair);
     return pair;
 }
 
@@ -305,7 +306,7 @@ cb_status cb_rupture_distance(const cb_law *law, double r1, double r2, double vo
     cb_status status = check_pair(law, r1, r2, volume);
     if (status != CB_OK) return status;
     if (!distance) return CB_ERR_NULL;
-    cb_pair pair = cb_pair_make(r1, r2, volume);
+    cb_pair pair = cb_pair_make(law, r1, r2, volume);
     if (law->validity == CB_VALIDITY_STRICT && !inside_validity(law, &pair))
         return CB_ERR_OUT_OF_VALIDITY;
     double d = rupture_of(law, &pair);
@@ -324,7 +325,7 @@ cb_status cb_rupture_volume(const cb_law *law, double r1, double r2, double gap,
         *volume = 0.0;
         return CB_OK;
     }
-    cb_pair pair = cb_pair_make(r1, r2, 0.0);
+    cb_pair pair = cb_pair_make(law, r1, r2, 0.0);
     double v;
     switch (law->rupture_in_use) {
     case CB_RUPTURE_LIAN: v = cb_rupture_volume_lian(law, &pair, gap); break;
@@ -344,7 +345,7 @@ cb_status cb_force(const cb_law *law, double r1, double r2, double volume, doubl
     if (status != CB_OK) return status;
     if (!force) return CB_ERR_NULL;
     if (!isfinite(gap)) return CB_ERR_NOT_FINITE;
-    cb_pair pair = cb_pair_make(r1, r2, volume);
+    cb_pair pair = cb_pair_make(law, r1, r2, volume);
     if (law->validity == CB_VALIDITY_STRICT && !inside_validity(law, &pair))
         return CB_ERR_OUT_OF_VALIDITY;
 

@@ -11,6 +11,14 @@
 
 #include "capbridge.h"
 
+/* Where a pair sits in the table law's table (law_table.c): found once per call, used
+ * by both its rupture distance and its force. */
+typedef struct cb_table_position {
+    int ratio_first, volume_first; /* first nodes of the 4-point stencils */
+    double weight[16];             /* products of the stencil weights (ratio-major) */
+    double scaled_rupture;         /* rupture / R_h, interpolated */
+} cb_table_position;
+
 /* Inputs of one evaluation, with the radius conventions every law may need. */
 typedef struct cb_pair {
     double r1, r2;       /* as given */
@@ -18,9 +26,11 @@ typedef struct cb_pair {
     double r_harmonic;   /* 2 r1 r2 / (r1 + r2) */
     double r_geometric;  /* sqrt(r1 r2) */
     double volume;
+    cb_table_position table; /* set by cb_table_locate, for the table law only */
 } cb_pair;
 
-cb_pair cb_pair_make(double r1, double r2, double volume);
+/* The pair of one call; for the table law, located in its table. */
+cb_pair cb_pair_make(const cb_law *law, double r1, double r2, double volume);
 
 /* A law's force at 0 <= gap <= rupture: writes F >= 0 and dF/dgap.
  * Returns CB_ERR_NO_BRIDGE where the law has no bridge (e.g. Weigert's arcsin > 1). */
@@ -63,6 +73,7 @@ double cb_rupture_volume_willett(const cb_law *law, const cb_pair *pair, double 
 cb_status cb_table_create(double contact_angle, struct cb_table **table, cb_message *msg);
 void cb_table_destroy(struct cb_table *table);
 double cb_table_contact_angle(const struct cb_table *table);
+void cb_table_locate(const cb_law *law, cb_pair *pair);
 double cb_table_rupture(const cb_law *law, const cb_pair *pair);
 double cb_table_rupture_volume(const cb_law *law, const cb_pair *pair, double gap);
 

@@ -1,0 +1,303 @@
+/* law_table.c — the exact Laplace-Young solution, tabulated and interpolated.
+ *
+ * At preparation the table is built from the exact solver for the law's contact angle,
+ * over the size ratio through q = sqrt(1 - R_small/R_large) (uniform in q, for s =
+ * R_small/R_large in [0.1, 1]; above about 30 degrees the rupture distance of nearly
+ * equal spheres has a square-root cusp at s = 1, where the symmetric bridge becomes
+ * unstable to liquid shifting to one sphere, and in q it is smooth), the scaled volume
+ * v = V/R_h^3 (uniform in ln v, nodes reaching a quarter decade beyond the domain
+ * [1e-5, 1e-1] so that its edges get centred stencils), and the gap through
+ *     w = sqrt(1 - sqrt(gap / rupture))  in [0, 1]  (w = 1 at contact, 0 at the fold),
+ * i.e. gap = rupture (1 - w^2)^2. Why w and not gap/rupture: the force has two
+ * narrow features, a steep fall over gaps of order sqrt(V/R) near contact (Willett's
+ * S+ scale, a small fraction of the rupture distance for small V) and a square-root
+ * singularity at the fold, F ~ F* + c sqrt(rupture - gap). In w both are smooth and
+ * spread out (gap ~ (1 - w)^2 near contact, sqrt(rupture - gap) ~ w near the fold).
+ * Stored: the rupture distance rupture/R_h at each (s, v), and F/(2 pi gamma R_h) with its
+ * w-slopes at each (s, v, w). Interpolation: cubic Lagrange in s and ln v (4-point
+ * stencils), monotone cubic Hermite in w (Fritsch-Carlson slopes), so that along the gap
+ * the force never rises where the exact one does not.
+ * Outside the table (validity extend): s and v are clamped for the scaled force, and the
+ * rupture distance is extended with the V^(1/3) scaling of Lian's rule from the edge. */
+#include "laws.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#define CB_PI 3.14159265358979323846
+
+enum { TABLE_RATIOS = 12, TABLE_VOLUMES = 19, TABLE_GAPS = 25 };
+static const double table_ratio_min = 0.1;      /* s = R_small / R_large */
+static const double table_volume_min = 1e-5;    /* the domain in V / R_h^3 */
+static const double table_volume_max = 1e-1;
+static const double table_node_volume_min = 5.6234132519034911e-6; /* 10^-5.25 */
+static const double table_node_volume_max = 0.17782794100389229;   /* 10^-0.75 */
+
+struct cb_table {
+    double contact_angle;
+    double log_rupture[TABLE_RATIOS][TABLE_VOLUMES];          /* ln(rupture / R_h) */
+    /* F / (2 pi gamma R_h) and its w-slope, side by side for one cache line per cell */
+    double force[TABLE_RATIOS][TABLE_VOLUMES][TABLE_GAPS][2];
+};
+
+/* The size-ratio coordinate q = sqrt(1 - s) and its last node. */
+static double ratio_coordinate(double s) { return sqrt(1.0 - s); }
+
+static double ratio_node(int i) /* s at node i (q ascending, s descending from 1) */
+{
+    double q = ratio_coordinate(table_ratio_min) * i / (TABLE_RATIOS - 1);
+    return 1.0 - q * q;
+}
+
+static double log_volume_node(int j)
+{
+    double lo = log(table_node_volume_min), hi = log(table_node_volume_max);
+    return lo + (hi - lo) * j / (TABLE_VOLUMES - 1);
+}
+
+static double gap_node(int k) { return (double)k / (TABLE_GAPS - 1); } /* w */
+
+/* gap / rupture at a gap coordinate w, and back. */
+static double gap_fraction(double w)
+{
+    double c = 1.0 - w * w;
+    return c * c;
+}
+
+static double gap_coordinate(double fraction) { return sqrt(1.0 - sqrt(fraction)); }
+
+/* Fritsch-Carlson slopes of a sequence increasing or decreasing in w: a cubic Hermite
+ * with these slopes is monotone wherever the data are. At contact (w = 1) the slope is
+ * the exact one, 0, since gap ~ (1 - w)^2 there. */
+static void monotone_slopes(const double *y, double h, double *m)
+{
+    double d[TABLE_GAPS - 1];
+    for (int k = 0; k < TABLE_GAPS - 1; ++k) d[k] = (y[k + 1] - y[k]) / h;
+    m[0] = d[0];
+    m[TABLE_GAPS - 1] = 0.0;
+    for (int k = 1; k < TABLE_GAPS - 1; ++k) {
+        if (d[k - 1] * d[k] <= 0.0) m[k] = 0.0;
+        else m[k] = 2.0 / (1.0 / d[k - 1] + 1.0 / d[k]); /* harmonic mean: monotone */
+    }
+    for (int k = 0; k < TABLE_GAPS - 1; ++k) {
+        if (d[k] == 0.0) {
+            m[k] = m[k + 1] = 0.0;
+            continue;
+        }
+        double a = m[k] / d[k], b = m[k + 1] / d[k];
+        double r = a * a + b * b;
+        if (r > 9.0) {
+            double t = 3.0 / sqrt(r);
+            m[k] = t * a * d[k];
+            m[k + 1] = t * b * d[k];
+        }
+    }
+}
+
+static cb_status fill_node(struct cb_table *table, int i, int j, cb_message *msg)
+{
+    double s = ratio_node(i), v = exp(log_volume_node(j));
+    double r_small = 1.0, r_large = 1.0 / s;
+    double rh = cb_radius_harmonic(r_small, r_large);
+    cb_exact_problem problem = {r_small, r_large, table->contact_angle, 1.0, v * rh * rh * rh, 0};
+    double rupture = 0.0;
+    cb_exact_bridge bridges[TABLE_GAPS];
+    cb_status status = cb_exact_rupture(&problem, &rupture, &bridges[TABLE_GAPS - 1]);
+    if (status == CB_OK) {
+        double gaps[TABLE_GAPS - 1];
+        /* Ascending gaps: w from 1 (contact) down to w_1; the fold (w = 0) is known. */
+        for (int k = 0; k < TABLE_GAPS - 1; ++k)
+            gaps[k] = rupture * gap_fraction(gap_node(TABLE_GAPS - 1 - k));
+        gaps[0] = 0.0;
+        status = cb_exact_curve(&problem, TABLE_GAPS - 1, gaps, bridges);
+    }
+    if (status != CB_OK)
+        return cb_fail(msg, status,
+                       "table law: exact solver failed at size ratio %g, V/R_h^3 = %g, "
+                       "theta = %g degrees: %s",
+                       1.0 / s, v, table->contact_angle * 180.0 / CB_PI,
+                       cb_status_message(status));
+    table->log_rupture[i][j] = log(rupture / rh);
+    double f[TABLE_GAPS], m[TABLE_GAPS];
+    for (int k = 0; k < TABLE_GAPS - 1; ++k)
+        f[TABLE_GAPS - 1 - k] = bridges[k].force / (2.0 * CB_PI * rh);
+    f[0] = bridges[TABLE_GAPS - 1].force / (2.0 * CB_PI * rh);
+    monotone_slopes(f, gap_node(1), m);
+    for (int k = 0; k < TABLE_GAPS; ++k) {
+        table->force[i][j][k][0] = f[k];
+        table->force[i][j][k][1] = m[k];
+    }
+    return CB_OK;
+}
+
+cb_status cb_table_create(double contact_angle, struct cb_table **table, cb_message *msg)
+{
+    struct cb_table *t = malloc(sizeof *t);
+    if (!t) return cb_fail(msg, CB_ERR_NO_MEMORY, "table law: out of memory");
+    t->contact_angle = contact_angle;
+    for (int i = 0; i < TABLE_RATIOS; ++i) {
+        for (int j = 0; j < TABLE_VOLUMES; ++j) {
+            cb_status status = fill_node(t, i, j, msg);
+            if (status != CB_OK) {
+                free(t);
+                return status;
+            }
+        }
+    }
+    *table = t;
+    return CB_OK;
+}
+
+void cb_table_destroy(struct cb_table *table) { free(table); }
+
+double cb_table_contact_angle(const struct cb_table *table) { return table->contact_angle; }
+
+/* A 4-point cubic Lagrange stencil on a uniform grid of n nodes for coordinate x
+ * (in node units, clamped into [0, n-1]): first node and weights. */
+static int lagrange_stencil(double x, int n, double w[4])
+{
+    x = x < 0.0 ? 0.0 : x > n - 1 ? n - 1 : x;
+    int first = (int)x - 1; /* x >= 0: the cast is the floor */
+    first = first < 0 ? 0 : first > n - 4 ? n - 4 : first;
+    double t = x - first; /* in [0, 3] */
+    double t1 = t - 1.0, t2 = t - 2.0, t3 = t - 3.0;
+    w[0] = -t1 * t2 * t3 * (1.0 / 6.0);
+    w[1] = t * t2 * t3 * 0.5;
+    w[2] = -t * t1 * t3 * 0.5;
+    w[3] = t * t1 * t2 * (1.0 / 6.0);
+    return first;
+}
+
+/* rupture / R_h where the pair sits. Interpolated as a logarithm: ln(rupture) is close
+ * to (1/3) ln V plus a slowly varying part, which the cubic stencil in ln v captures far
+ * better than the rupture distance itself. Beyond the table it is extended with the
+ * V^(1/3) scaling of Lian's rule. */
+static double scaled_rupture(const struct cb_table *t, const cb_table_position *p,
+                             double volume_excess)
+{
+    double sum = 0.0;
+    for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b)
+            sum += p->weight[4 * a + b] * t->log_rupture[p->ratio_first + a][p->volume_first + b];
+    double inside = exp(sum);
+    return volume_excess == 1.0 ? inside : inside * cbrt(volume_excess);
+}
+
+/* Where the pair sits in the table: the stencils in q and ln v, and its rupture
+ * distance. */
+void cb_table_locate(const cb_law *law, cb_pair *pair)
+{
+    cb_table_position *p = &pair->table;
+    double rh = pair->r_harmonic;
+    double v = pair->volume / (rh * rh * rh);
+    double clamped = v < table_volume_min ? table_volume_min
+                     : v > table_volume_max ? table_volume_max
+                                            : v;
+    double volume_excess = v / clamped;
+    double x_ratio = ratio_coordinate(pair->r_small / pair->r_large) /
+                     ratio_coordinate(table_ratio_min) * (TABLE_RATIOS - 1);
+    double x_volume = (log(clamped) - log_volume_node(0)) /
+                      (log_volume_node(1) - log_volume_node(0));
+    double wr[4], wv[4];
+    p->ratio_first = lagrange_stencil(x_ratio, TABLE_RATIOS, wr);
+    p->volume_first = lagrange_stencil(x_volume, TABLE_VOLUMES, wv);
+    for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b) p->weight[4 * a + b] = wr[a] * wv[b];
+    p->scaled_rupture = scaled_rupture(law->table, p, volume_excess);
+}
+
+double cb_table_rupture(const cb_law *law, const cb_pair *pair)
+{
+    (void)law;
+    return pair->table.scaled_rupture * pair->r_harmonic;
+}
+
+/* The inverse of the rupture distance in the volume, by bisection in ln V (it is
+ * monotone: a larger bridge reaches further). */
+double cb_table_rupture_volume(const cb_law *law, const cb_pair *pair_in, double gap)
+{
+    cb_pair pair = *pair_in;
+    double rh = pair.r_harmonic;
+    double lo = log(1e-30), hi = log(1e30);
+    for (int iteration = 0; iteration < 200 && hi - lo > 1e-14 * fabs(hi); ++iteration) {
+        double mid = 0.5 * (lo + hi);
+        pair.volume = exp(mid) * rh * rh * rh;
+        cb_table_locate(law, &pair);
+        if (cb_table_rupture(law, &pair) < gap) lo = mid;
+        else hi = mid;
+    }
+    return exp(hi) * rh * rh * rh;
+}
+
+/* The Hermite cell of w, with the (q, ln v)-weighted values and w-slopes at its ends. */
+typedef struct hermite_cell {
+    double w0, h, f0, f1, m0, m1;
+} hermite_cell;
+
+static hermite_cell cell_at(const struct cb_table *t, const cb_table_position *p, double w)
+{
+    hermite_cell c = {0.0, gap_node(1), 0.0, 0.0, 0.0, 0.0};
+    int k = (int)(w * (TABLE_GAPS - 1));
+    if (k > TABLE_GAPS - 2) k = TABLE_GAPS - 2;
+    c.w0 = k * c.h;
+    for (int a = 0; a < 4; ++a) {
+        for (int b = 0; b < 4; ++b) {
+            double weight = p->weight[4 * a + b];
+            const double *fm = t->force[p->ratio_first + a][p->volume_first + b][k];
+            c.f0 += weight * fm[0];
+            c.m0 += weight * fm[1];
+            c.f1 += weight * fm[2];
+            c.m1 += weight * fm[3];
+        }
+    }
+    return c;
+}
+
+static double hermite_value(const hermite_cell *c, double w)
+{
+    double x = (w - c->w0) / c->h, x2 = x * x, x3 = x2 * x;
+    return (2 * x3 - 3 * x2 + 1) * c->f0 + (x3 - 2 * x2 + x) * c->h * c->m0 +
+           (-2 * x3 + 3 * x2) * c->f1 + (x3 - x2) * c->h * c->m1;
+}
+
+static double hermite_slope(const hermite_cell *c, double w)
+{
+    double x = (w - c->w0) / c->h, x2 = x * x;
+    return ((6 * x2 - 6 * x) * c->f0 + (3 * x2 - 4 * x + 1) * c->h * c->m0 +
+            (-6 * x2 + 6 * x) * c->f1 + (3 * x2 - 2 * x) * c->h * c->m1) / c->h;
+}
+
+cb_status cb_table_force(const cb_law *law, const cb_pair *pair, double gap, double *force,
+                         double *stiffness)
+{
+    const struct cb_table *t = law->table;
+    double rupture = pair->table.scaled_rupture * pair->r_harmonic;
+    double fraction = gap < rupture ? gap / rupture : 1.0;
+    double w = gap_coordinate(fraction);
+    hermite_cell c = cell_at(t, &pair->table, w);
+    double scale = 2.0 * CB_PI * law->surface_tension * pair->r_harmonic;
+    double value = hermite_value(&c, w);
+    *force = value > 0.0 ? value * scale : 0.0;
+    /* dF/dgap = dF/dw / (dgap/dw), dgap/dw = -4 rupture w (1 - w^2). Both vanish at
+     * contact (a finite limit) and dgap/dw vanishes at the fold (the exact force has an
+     * infinite slope there). Within half a cell of either end the stiffness is taken at
+     * that half-cell point, so that it stays finite and well conditioned. */
+    double half = 0.5 * c.h;
+    double w_slope = w < half ? half : w > 1.0 - half ? 1.0 - half : w;
+    if (w_slope != w) c = cell_at(t, &pair->table, w_slope);
+    *stiffness = hermite_slope(&c, w_slope) * scale /
+                 (-4.0 * rupture * w_slope * (1.0 - w_slope * w_slope));
+    return CB_OK;
+}
+
+/* The table's range, where tests/test_table.c holds it to 0.5 % of the exact solver.
+ * Above about 70 degrees the exact force near contact is small and no longer falls
+ * monotonically with the gap, which the monotone interpolant does not follow. */
+cb_validity cb_table_validity(const cb_law *law)
+{
+    (void)law;
+    cb_validity v = {table_volume_min, table_volume_max, 70.0 * CB_PI / 180.0,
+                     1.0 / table_ratio_min, CB_RADIUS_HARMONIC,
+                     "the table's range, checked against the exact solver (law_table.c)"};
+    return v;
+}
