@@ -310,7 +310,7 @@ cb_status cb_rupture_distance(const cb_law *law, double r1, double r2, double vo
     if (law->validity == CB_VALIDITY_STRICT && !inside_validity(law, &pair))
         return CB_ERR_OUT_OF_VALIDITY;
     double d = rupture_of(law, &pair);
-    if (!isfinite(d)) return CB_ERR_RANGE;
+    if (!(isfinite(d) && d > 0.0)) return CB_ERR_RANGE; /* scales beyond double range */
     *distance = d;
     return CB_OK;
 }
@@ -350,6 +350,8 @@ cb_status cb_force(const cb_law *law, double r1, double r2, double volume, doubl
         return CB_ERR_OUT_OF_VALIDITY;
 
     double f = 0.0, df = 0.0;
+    double rupture = rupture_of(law, &pair);
+    if (!(isfinite(rupture) && rupture > 0.0)) return CB_ERR_RANGE; /* scales beyond range */
     if (gap < 0.0) {
         /* Overlap: Richefeu eq. 10 keeps the contact value (continuous); Gladkyy eq. 4
          * applies no capillary force in mechanical contact. */
@@ -357,7 +359,7 @@ cb_status cb_force(const cb_law *law, double r1, double r2, double volume, doubl
             status = model_forces[law->model](law, &pair, 0.0, &f, &df);
             df = 0.0;
         }
-    } else if (gap <= rupture_of(law, &pair)) {
+    } else if (gap <= rupture) {
         status = model_forces[law->model](law, &pair, gap, &f, &df);
     }
     if (status != CB_OK) return status;
