@@ -30,7 +30,7 @@ def main(report_path, png_path):
                        marker="s", zorder=3)
         ax.annotate(row["law"], (cost, rms_all), textcoords="offset points", xytext=(6, -3),
                     fontsize=9)
-    ax.set_xscale("log")
+    ax.set_xlim(left=0)
     ax.set_yscale("log")
     ax.set_xlabel("cost per force call [ns] (measured in the same run)")
     ax.set_ylabel("force error against exact Laplace-Young [%]")
