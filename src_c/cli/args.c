@@ -239,6 +239,8 @@ static int parse(cli_request *request, int argc, char **argv)
     return CLI_EXIT_OK;
 }
 
+static int prepare_law(const char *command, cb_law *law);
+
 int cli_parse(cli_request *request, int argc, char **argv, int *exit_code)
 {
     for (int i = 1; i < argc && strcmp(argv[i], "--") != 0; ++i) {
@@ -250,10 +252,14 @@ int cli_parse(cli_request *request, int argc, char **argv, int *exit_code)
         }
     }
     *exit_code = argc > 0 ? parse(request, argc - 1, argv + 1) : CLI_EXIT_USAGE;
+    if (*exit_code == CLI_EXIT_OK && request->wants_law)
+        *exit_code = prepare_law(request->command, request->law);
     return *exit_code == CLI_EXIT_OK;
 }
 
-int cli_prepare_law(const char *command, cb_law *law)
+/* Prepare the law (build what it derives). On failure prints the core's message and
+ * returns CLI_EXIT_RUNTIME. */
+static int prepare_law(const char *command, cb_law *law)
 {
     cb_message msg;
     msg.text[0] = '\0';

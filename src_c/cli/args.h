@@ -54,7 +54,7 @@ typedef struct cli_request {
     const char *command;       /* subcommand name, for messages */
     const char *usage;         /* printed for --help or -h */
     int wants_law;             /* the line starts with LAW [keyword value]... */
-    cb_law *law;               /* out: initialised and configured, not yet prepared */
+    cb_law *law;               /* out: initialised, configured and prepared */
     cli_option *options;
     size_t n_options;
     const char *positional_name; /* e.g. "FILE"; NULL if the command takes none */
@@ -64,16 +64,14 @@ typedef struct cli_request {
 /* Parse argv (argv[0] is the subcommand name). Returns 1 to go on; 0 to stop with the
  * exit code in *exit_code: CLI_EXIT_OK after printing the usage (--help or -h anywhere
  * before a "--"), CLI_EXIT_USAGE after printing one line on stderr. A required option
- * that is missing is an error; a missing positional is left to the caller. */
+ * that is missing is an error; a missing positional is left to the caller. With
+ * wants_law, the law is also prepared (CLI_EXIT_RUNTIME with the core's message if that
+ * fails). */
 int cli_parse(cli_request *request, int argc, char **argv, int *exit_code);
 
 /* A whole string that is one finite number in decimal notation (no leading or trailing
  * text, no blanks, no hexadecimal, inf or nan). */
 int cli_parse_number(const char *text, double *value);
-
-/* Prepare the law (build what it derives). On failure prints the core's message and
- * returns CLI_EXIT_RUNTIME. */
-int cli_prepare_law(const char *command, cb_law *law);
 
 /* Messages: "capbridge COMMAND: ..." on stderr, one line; return the exit code. */
 int cli_usage_error(const char *command, const char *format, ...)

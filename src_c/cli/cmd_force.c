@@ -30,8 +30,6 @@ int cmd_force(int argc, char **argv)
     cli_request request = {name, usage, 1, &law, options, N_OPTIONS, NULL, NULL};
     int code;
     if (!cli_parse(&request, argc, argv, &code)) return code;
-    code = cli_prepare_law(name, &law);
-    if (code != CLI_EXIT_OK) return code;
 
     double r1 = options[R1].number, r2 = options[R2].number, volume = options[VOLUME].number;
     double gap = options[GAP].number;

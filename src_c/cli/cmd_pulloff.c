@@ -148,8 +148,6 @@ int cmd_pulloff(int argc, char **argv)
     cli_request request = {name, usage, 1, &law, options, N_OPTIONS, NULL, NULL};
     int code;
     if (!cli_parse(&request, argc, argv, &code)) return code;
-    code = cli_prepare_law(name, &law);
-    if (code != CLI_EXIT_OK) return code;
 
     pulloff p;
     p.law = &law;

@@ -352,6 +352,31 @@ static int replay_file(replay *r, FILE *file)
     return got < 0 ? -1 : 0;
 }
 
+/* The columns and constants of the command line, checked against each other. */
+static int check_columns(const cli_option *options, const char *positional, replay *r)
+{
+    const char *name = "replay";
+    int code = parse_columns(options[COLUMNS].text, r->column);
+    if (code != CLI_EXIT_OK) return code;
+    const int constant_option[3] = {R1, R2, VOLUME};
+    for (int k = COL_R1; k <= COL_VOLUME; ++k) {
+        const cli_option *option = &options[constant_option[k]];
+        if (option->given && r->column[k])
+            return cli_usage_error(name, "%s is both a column (--columns %s=%ld) and %s",
+                                   column_names[k], column_names[k], r->column[k], option->name);
+        if (!option->given && !r->column[k])
+            return cli_usage_error(name, "missing %s: give --columns %s=INDEX or %s",
+                                   column_names[k], column_names[k], option->name);
+        r->constant[k] = option->number;
+    }
+    if (!r->column[COL_FORCE])
+        return cli_usage_error(name, "--columns lacks force=INDEX (the capillary force column)");
+    if (!r->column[COL_GAP] == !r->column[COL_DISTANCE])
+        return cli_usage_error(name, "--columns needs exactly one of gap=INDEX, distance=INDEX");
+    if (!positional) return cli_usage_error(name, "missing FILE (- for standard input)");
+    return CLI_EXIT_OK;
+}
+
 int cmd_replay(int argc, char **argv)
 {
     const char *name = "replay";
@@ -372,29 +397,13 @@ int cmd_replay(int argc, char **argv)
     replay r;
     memset(&r, 0, sizeof r);
     r.max_relative = -1.0;
-    code = parse_columns(options[COLUMNS].text, r.column);
-    if (code != CLI_EXIT_OK) return code;
-    const int constant_option[3] = {R1, R2, VOLUME};
-    for (int k = COL_R1; k <= COL_VOLUME; ++k) {
-        const cli_option *option = &options[constant_option[k]];
-        if (option->given && r.column[k])
-            return cli_usage_error(name, "%s is both a column (--columns %s=%ld) and %s",
-                                   column_names[k], column_names[k], r.column[k], option->name);
-        if (!option->given && !r.column[k])
-            return cli_usage_error(name, "missing %s: give --columns %s=INDEX or %s",
-                                   column_names[k], column_names[k], option->name);
-        r.constant[k] = option->number;
+    code = check_columns(options, request.positional, &r);
+    if (code != CLI_EXIT_OK) {
+        cb_law_release(&law);
+        return code;
     }
-    if (!r.column[COL_FORCE])
-        return cli_usage_error(name, "--columns lacks force=INDEX (the capillary force column)");
-    if (!r.column[COL_GAP] == !r.column[COL_DISTANCE])
-        return cli_usage_error(name, "--columns needs exactly one of gap=INDEX, distance=INDEX");
-    if (!request.positional) return cli_usage_error(name, "missing FILE (- for standard input)");
-
     for (int k = 0; k < N_COLUMNS; ++k)
         if (r.column[k] > r.needed) r.needed = r.column[k];
-    code = cli_prepare_law(name, &law);
-    if (code != CLI_EXIT_OK) return code;
 
     r.law = &law;
     r.file_name = request.positional;

@@ -21,8 +21,6 @@ int cmd_rupture(int argc, char **argv)
     cli_request request = {name, usage, 1, &law, options, N_OPTIONS, NULL, NULL};
     int code;
     if (!cli_parse(&request, argc, argv, &code)) return code;
-    code = cli_prepare_law(name, &law);
-    if (code != CLI_EXIT_OK) return code;
 
     double rupture = 0.0;
     cb_status status = cb_rupture_distance(&law, options[R1].number, options[R2].number,
