@@ -222,7 +222,7 @@ void cb_table_locate(const cb_law *law, cb_pair *pair)
                       (log_volume_node(1) - log_volume_node(0));
     p->ratio_first = lagrange_stencil(x_ratio, TABLE_RATIOS, p->ratio_weight);
     p->volume_first = lagrange_stencil(x_volume, TABLE_VOLUMES, p->volume_weight);
-    p->scaled_rupture = scaled_rupture(law->table, p, v / clamped);
+    p->scaled_rupture = scaled_rupture(law->table, p, v == clamped ? 1.0 : v / clamped);
 }
 
 double cb_table_rupture(const cb_law *law, const cb_pair *pair)

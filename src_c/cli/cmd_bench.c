@@ -19,19 +19,25 @@ int cmd_bench(int argc, char **argv)
         fprintf(stderr, "capbridge bench: unknown argument '%s': bench takes none\n", argv[1]);
         return 2;
     }
+    cb_law laws[CB_MODEL_COUNT];
     double ns[CB_MODEL_COUNT], cheapest = HUGE_VAL;
-    for (int m = 0; m < CB_MODEL_COUNT; ++m) {
-        cb_law law;
+    int prepared = 0, failed = 0;
+    for (int m = 0; m < CB_MODEL_COUNT && !failed; ++m, ++prepared) {
         cb_message msg;
-        if (cb_law_init(&law, (cb_model)m, 0.0728, 0.0) != CB_OK ||
-            cb_law_prepare(&law, &msg) != CB_OK) {
+        if (cb_law_init(&laws[m], (cb_model)m, 0.0728, 0.0) != CB_OK ||
+            cb_law_prepare(&laws[m], &msg) != CB_OK) {
             fprintf(stderr, "capbridge bench: %s: %s\n", cb_model_name((cb_model)m), msg.text);
-            return 1;
+            failed = 1;
         }
-        ns[m] = cb_law_cost_ns(&law);
-        cb_law_release(&law);
-        if (m != CB_MODEL_TABLE && ns[m] < cheapest) cheapest = ns[m];
     }
+    if (!failed && cb_law_costs_ns(laws, CB_MODEL_COUNT, ns) != 0) {
+        fprintf(stderr, "capbridge bench: out of memory\n");
+        failed = 1;
+    }
+    for (int m = 0; m < prepared; ++m) cb_law_release(&laws[m]);
+    if (failed) return 1;
+    for (int m = 0; m < CB_MODEL_COUNT; ++m)
+        if (m != CB_MODEL_TABLE && ns[m] < cheapest) cheapest = ns[m];
     printf("law,ns_per_call,ratio_to_cheapest_closed_form\n");
     for (int m = 0; m < CB_MODEL_COUNT; ++m)
         printf("%s,%.2f,%.3f\n", cb_model_name((cb_model)m), ns[m], ns[m] / cheapest);

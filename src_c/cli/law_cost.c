@@ -1,4 +1,4 @@
-/* law_cost.c — time cb_force per law on the same sample of pairs. */
+/* law_cost.c — time cb_force per law on the same sample of pairs, laws interleaved. */
 #define _POSIX_C_SOURCE 199309L /* clock_gettime */
 #include "law_cost.h"
 
@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <time.h>
 
-enum { SAMPLE = 4096, PASSES = 7 };
+enum { SAMPLE = 4096, PASSES = 9, REPEATS = 8 };
 
 static double seconds_now(void)
 {
@@ -25,40 +25,70 @@ static double next_uniform(uint64_t *state)
     return (double)((*state * 2685821657736338717ULL) >> 11) * 0x1.0p-53;
 }
 
-double cb_law_cost_ns(const cb_law *law)
+/* The pairs, and for each a uniform fraction of the law's rupture distance. */
+typedef struct sample {
+    double r1[SAMPLE], r2[SAMPLE], volume[SAMPLE], fraction[SAMPLE];
+} sample;
+
+static void make_sample(sample *s)
 {
-    double *r1 = malloc(4 * SAMPLE * sizeof *r1);
-    if (!r1) return HUGE_VAL;
-    double *r2 = r1 + SAMPLE, *volume = r2 + SAMPLE, *gap = volume + SAMPLE;
     uint64_t state = 0x9E3779B97F4A7C15ULL;
     for (int i = 0; i < SAMPLE; ++i) {
-        r1[i] = 1e-3;
-        r2[i] = 1e-3 * exp(log(10.0) * next_uniform(&state));
-        double rh = cb_radius_harmonic(r1[i], r2[i]);
-        volume[i] = exp(log(1e-5) + log(1e4) * next_uniform(&state)) * rh * rh * rh;
-        double rupture = 0.0;
-        if (cb_rupture_distance(law, r1[i], r2[i], volume[i], &rupture) != CB_OK) rupture = 0.0;
-        gap[i] = rupture * next_uniform(&state);
+        s->r1[i] = 1e-3;
+        s->r2[i] = 1e-3 * exp(log(10.0) * next_uniform(&state));
+        double rh = cb_radius_harmonic(s->r1[i], s->r2[i]);
+        s->volume[i] = exp(log(1e-5) + log(1e4) * next_uniform(&state)) * rh * rh * rh;
+        s->fraction[i] = next_uniform(&state);
     }
-    double best = HUGE_VAL;
+}
+
+/* Seconds for REPEATS sweeps of the sample with one law. */
+static double time_law(const cb_law *law, const sample *s, const double *gap)
+{
     volatile double sink = 0.0;
-    for (int pass = 0; pass < PASSES; ++pass) {
-        const int repeats = 16;
-        double sum = 0.0;
-        double start = seconds_now();
-        for (int r = 0; r < repeats; ++r) {
-            for (int i = 0; i < SAMPLE; ++i) {
-                double force = 0.0, stiffness = 0.0;
-                cb_force(law, r1[i], r2[i], volume[i], gap[i], &force, &stiffness);
-                sum += force + stiffness;
-            }
+    double sum = 0.0;
+    double start = seconds_now();
+    for (int r = 0; r < REPEATS; ++r) {
+        for (int i = 0; i < SAMPLE; ++i) {
+            double force = 0.0, stiffness = 0.0;
+            cb_force(law, s->r1[i], s->r2[i], s->volume[i], gap[i], &force, &stiffness);
+            sum += force + stiffness;
         }
-        double elapsed = seconds_now() - start;
-        sink += sum;
-        double per_call = elapsed / ((double)repeats * SAMPLE) * 1e9;
-        if (per_call < best) best = per_call;
     }
+    double elapsed = seconds_now() - start;
+    sink += sum;
     (void)sink;
-    free(r1);
-    return best;
+    return elapsed;
+}
+
+int cb_law_costs_ns(const cb_law *laws, int n, double *ns_per_call)
+{
+    sample *s = malloc(sizeof *s);
+    double *gaps = malloc((size_t)n * SAMPLE * sizeof *gaps);
+    if (!s || !gaps) {
+        free(s);
+        free(gaps);
+        return -1;
+    }
+    make_sample(s);
+    for (int l = 0; l < n; ++l) {
+        ns_per_call[l] = HUGE_VAL;
+        for (int i = 0; i < SAMPLE; ++i) {
+            double rupture = 0.0;
+            if (cb_rupture_distance(&laws[l], s->r1[i], s->r2[i], s->volume[i], &rupture) !=
+                CB_OK)
+                rupture = 0.0;
+            gaps[(size_t)l * SAMPLE + i] = rupture * s->fraction[i];
+        }
+    }
+    for (int pass = 0; pass < PASSES; ++pass) {
+        for (int l = 0; l < n; ++l) {
+            double ns = time_law(&laws[l], s, gaps + (size_t)l * SAMPLE) /
+                        ((double)REPEATS * SAMPLE) * 1e9;
+            if (ns < ns_per_call[l]) ns_per_call[l] = ns;
+        }
+    }
+    free(s);
+    free(gaps);
+    return 0;
 }

@@ -4,9 +4,11 @@
 
 #include "capbridge.h"
 
-/* Nanoseconds per cb_force call on a fixed pseudo-random sample of pairs inside the
- * grid's domain (size ratio 1..10, V/R_h^3 1e-5..1e-1, 0 <= gap <= the law's rupture
- * distance): the best of several timed passes. The law must be prepared. */
-double cb_law_cost_ns(const cb_law *law);
+/* Nanoseconds per cb_force call of each of n prepared laws, on a fixed pseudo-random
+ * sample of pairs inside the grid's domain (size ratio 1..10, V/R_h^3 1e-5..1e-1,
+ * 0 <= gap <= the law's rupture distance). The laws take turns within every timed pass
+ * and each keeps its best pass, so that the load of a shared machine falls on all of
+ * them alike. Returns 0 on success, -1 when memory runs out. */
+int cb_law_costs_ns(const cb_law *laws, int n, double *ns_per_call);
 
 #endif
