@@ -28,33 +28,35 @@
 
 #define CB_PI 3.14159265358979323846
 
+/* The grid. Node positions are given together with the reciprocal steps the lookup
+ * multiplies by, since a division on every call would cost more than the interpolation:
+ *   size ratio: q = sqrt(1 - s) at q_i = q_max i / 11, q_max = sqrt(1 - 0.1);
+ *   volume:     ln v at ln v_j = ln(10^-5.25) + j ln(10)/4 (four per decade, 10^-0.75 last). */
 enum { TABLE_RATIOS = 12, TABLE_VOLUMES = 19, TABLE_GAPS = 33 };
 static const double table_ratio_min = 0.1;      /* s = R_small / R_large */
+static const double table_ratio_nodes_per_q = 11.595018087284059; /* 11 / sqrt(0.9) */
 static const double table_volume_min = 1e-5;    /* the domain in V / R_h^3 */
 static const double table_volume_max = 1e-1;
-static const double table_node_volume_min = 5.6234132519034911e-6; /* 10^-5.25 */
-static const double table_node_volume_max = 0.17782794100389229;   /* 10^-0.75 */
+static const double table_log_volume_first = -12.088571738218741; /* -5.25 ln 10 */
+static const double table_log_volume_step = 0.5756462732485115;   /* ln(10) / 4 */
+static const double table_volume_nodes_per_log = 1.737177927613007; /* 4 / ln 10 */
 
 struct cb_table {
     double contact_angle;
     double rupture[TABLE_RATIOS][TABLE_VOLUMES];              /* rupture / R_h */
-    /* F / (2 pi gamma R_h) and its w-slope, side by side for one cache line per cell */
-    double force[TABLE_RATIOS][TABLE_VOLUMES][TABLE_GAPS][2];
+    /* F / (2 pi gamma R_h) and its w-slope, for each gap node the (s, v) plane */
+    double force[TABLE_GAPS][TABLE_RATIOS][TABLE_VOLUMES][2];
 };
-
-/* The size-ratio coordinate q = sqrt(1 - s) and its last node. */
-static double ratio_coordinate(double s) { return sqrt(1.0 - s); }
 
 static double ratio_node(int i) /* s at node i (q ascending, s descending from 1) */
 {
-    double q = ratio_coordinate(table_ratio_min) * i / (TABLE_RATIOS - 1);
+    double q = (double)i / table_ratio_nodes_per_q;
     return 1.0 - q * q;
 }
 
 static double log_volume_node(int j)
 {
-    double lo = log(table_node_volume_min), hi = log(table_node_volume_max);
-    return lo + (hi - lo) * j / (TABLE_VOLUMES - 1);
+    return table_log_volume_first + table_log_volume_step * j;
 }
 
 static double gap_node(int k) { return (double)k / (TABLE_GAPS - 1); } /* w */
@@ -126,8 +128,8 @@ static cb_status fill_node(struct cb_table *table, int i, int j, cb_message *msg
     f[0] = bridges[TABLE_GAPS - 1].force / (2.0 * CB_PI * rh);
     monotone_slopes(f, gap_node(1), m);
     for (int k = 0; k < TABLE_GAPS; ++k) {
-        table->force[i][j][k][0] = f[k];
-        table->force[i][j][k][1] = m[k];
+        table->force[k][i][j][0] = f[k];
+        table->force[k][i][j][1] = m[k];
     }
     return CB_OK;
 }
@@ -216,10 +218,8 @@ void cb_table_locate(const cb_law *law, cb_pair *pair)
     double clamped = v < table_volume_min ? table_volume_min
                      : v > table_volume_max ? table_volume_max
                                             : v;
-    double x_ratio = ratio_coordinate(pair->r_small / pair->r_large) /
-                     ratio_coordinate(table_ratio_min) * (TABLE_RATIOS - 1);
-    double x_volume = (table_log(clamped) - log_volume_node(0)) /
-                      (log_volume_node(1) - log_volume_node(0));
+    double x_ratio = sqrt(1.0 - pair->r_small / pair->r_large) * table_ratio_nodes_per_q;
+    double x_volume = (table_log(clamped) - table_log_volume_first) * table_volume_nodes_per_log;
     p->ratio_first = lagrange_stencil(x_ratio, TABLE_RATIOS, p->ratio_weight);
     p->volume_first = lagrange_stencil(x_volume, TABLE_VOLUMES, p->volume_weight);
     p->scaled_rupture = scaled_rupture(law->table, p, v == clamped ? 1.0 : v / clamped);
@@ -261,15 +261,14 @@ static hermite_cell cell_at(const struct cb_table *t, const cb_table_position *p
     c.w0 = k * c.h;
     const double *wv = p->volume_weight;
     for (int a = 0; a < 4; ++a) {
-        /* the four volume nodes of this ratio row, each [f_k, m_k, f_k+1, m_k+1] */
-        const double *n0 = t->force[p->ratio_first + a][p->volume_first][k];
-        const double *n1 = n0 + 2 * TABLE_GAPS, *n2 = n1 + 2 * TABLE_GAPS;
-        const double *n3 = n2 + 2 * TABLE_GAPS;
+        /* the four volume nodes of this ratio row at gap nodes k and k+1, [f, m] each */
+        const double *lo = t->force[k][p->ratio_first + a][p->volume_first];
+        const double *hi = t->force[k + 1][p->ratio_first + a][p->volume_first];
         double wr = p->ratio_weight[a];
-        c.f0 += wr * (wv[0] * n0[0] + wv[1] * n1[0] + wv[2] * n2[0] + wv[3] * n3[0]);
-        c.m0 += wr * (wv[0] * n0[1] + wv[1] * n1[1] + wv[2] * n2[1] + wv[3] * n3[1]);
-        c.f1 += wr * (wv[0] * n0[2] + wv[1] * n1[2] + wv[2] * n2[2] + wv[3] * n3[2]);
-        c.m1 += wr * (wv[0] * n0[3] + wv[1] * n1[3] + wv[2] * n2[3] + wv[3] * n3[3]);
+        c.f0 += wr * (wv[0] * lo[0] + wv[1] * lo[2] + wv[2] * lo[4] + wv[3] * lo[6]);
+        c.m0 += wr * (wv[0] * lo[1] + wv[1] * lo[3] + wv[2] * lo[5] + wv[3] * lo[7]);
+        c.f1 += wr * (wv[0] * hi[0] + wv[1] * hi[2] + wv[2] * hi[4] + wv[3] * hi[6]);
+        c.m1 += wr * (wv[0] * hi[1] + wv[1] * hi[3] + wv[2] * hi[5] + wv[3] * hi[7]);
     }
     return c;
 }
