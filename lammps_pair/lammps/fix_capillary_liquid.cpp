@@ -1,0 +1,471 @@
+/* ----------------------------------------------------------------------
+   capbridge — LAMMPS binding: fix capillary/liquid
+
+   fix ID group capillary/liquid fixed [V]
+   fix ID group capillary/liquid protocol1|protocol2|protocol3 (water W RHO | liquid V)
+                                 [every N] [start bridges|free] [vmax V]
+
+   The fix owns the liquid; pair style gran/capillary owns the bridges (in its pair
+   history) and does the per-step liquid exchange of Protocols 2 and 3 (see the comments
+   of PairGranCapillary::update_bridges and ::exchange_liquid).  This fix
+     - fixes the total liquid at the first run (W times the mass of the group over RHO,
+       or V), and the bridge volume the neighbor reach is built for (vmax);
+     - holds the per-atom free liquid of Protocols 2 and 3 (migrates with the atoms,
+       written to restart files; allocated only for these protocols);
+     - runs Protocol 1 (PairGranCapillary::protocol1) at the start and every N steps
+       (every re-neighboring for N = 0), and, for Protocols 2 and 3, once at the start
+       (start bridges) or hands the liquid to the atoms in proportion to their mass
+       (start free);
+     - holds the Protocol 1 pool: liquid of broken bridges until the next distribution;
+     - reports the census as a global vector.
+------------------------------------------------------------------------- */
+
+#include "fix_capillary_liquid.h"
+
+#include "pair_gran_capillary.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "group.h"
+#include "memory.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+const char *const mode_names[] = {"fixed", "protocol1", "protocol2", "protocol3"};
+constexpr int N_RESTART = 8;
+}    // namespace
+
+/* ---------------------------------------------------------------------- */
+
+FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), free_liquid(nullptr), pair(nullptr)
+{
+  if (narg < 4)
+    error->all(FLERR, "fix capillary/liquid: missing mode: allowed fixed, protocol1, protocol2, "
+               "protocol3");
+  mode = -1;
+  for (int m = 0; m < 4; m++)
+    if (strcmp(arg[3], mode_names[m]) == 0) mode = m;
+  if (mode < 0)
+    error->all(FLERR, "fix capillary/liquid: unknown mode '{}': allowed fixed, protocol1, "
+               "protocol2, protocol3", arg[3]);
+
+  fixed_volume = -1.0;
+  every = 0;
+  start_free = 0;
+  water = liquid_density = liquid_given = vmax_given = -1.0;
+  int iarg = 4;
+  if (mode == PairGranCapillary::LIQUID_FIXED && iarg < narg && utils::is_double(arg[iarg])) {
+    fixed_volume = utils::numeric(FLERR, arg[iarg], false, lmp);
+    if (!(fixed_volume >= 0.0))
+      error->all(FLERR, "fix capillary/liquid fixed: volume = {}: must be >= 0 (m^3)", arg[iarg]);
+    iarg++;
+  }
+  const bool protocol = mode != PairGranCapillary::LIQUID_FIXED;
+  auto need = [&](int count, const char *keyword) {
+    if (iarg + count >= narg)
+      error->all(FLERR, "fix capillary/liquid: keyword '{}' needs {} value{}", keyword, count,
+                 count > 1 ? "s" : "");
+  };
+  auto only_protocols = [&](const char *keyword) {
+    if (!protocol)
+      error->all(FLERR, "fix capillary/liquid fixed: keyword '{}' applies to protocol1, "
+                 "protocol2, protocol3 only", keyword);
+  };
+  while (iarg < narg) {
+    const char *key = arg[iarg];
+    if (strcmp(key, "water") == 0) {
+      only_protocols(key);
+      need(2, key);
+      water = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      liquid_density = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      if (!(water >= 0.0))
+        error->all(FLERR, "fix capillary/liquid: water content {}: must be >= 0 (mass of "
+                   "liquid over mass of solid)", arg[iarg + 1]);
+      if (!(liquid_density > 0.0))
+        error->all(FLERR, "fix capillary/liquid: liquid density {}: must be > 0 (kg/m^3)",
+                   arg[iarg + 2]);
+      iarg += 3;
+    } else if (strcmp(key, "liquid") == 0) {
+      only_protocols(key);
+      need(1, key);
+      liquid_given = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(liquid_given >= 0.0))
+        error->all(FLERR, "fix capillary/liquid: liquid {}: the total liquid volume must be "
+                   ">= 0 (m^3)", arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(key, "every") == 0) {
+      if (mode != PairGranCapillary::LIQUID_PROTOCOL1)
+        error->all(FLERR, "fix capillary/liquid: keyword 'every' applies to protocol1 only");
+      need(1, key);
+      every = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (every < 0)
+        error->all(FLERR, "fix capillary/liquid: every {}: must be >= 0 (0 = at every "
+                   "re-neighboring)", every);
+      iarg += 2;
+    } else if (strcmp(key, "start") == 0) {
+      if (mode != PairGranCapillary::LIQUID_PROTOCOL2 && mode != PairGranCapillary::LIQUID_PROTOCOL3)
+        error->all(FLERR, "fix capillary/liquid: keyword 'start' applies to protocol2 and "
+                   "protocol3 only");
+      need(1, key);
+      if (strcmp(arg[iarg + 1], "bridges") == 0)
+        start_free = 0;
+      else if (strcmp(arg[iarg + 1], "free") == 0)
+        start_free = 1;
+      else
+        error->all(FLERR, "fix capillary/liquid: start '{}': allowed bridges, free", arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(key, "vmax") == 0) {
+      only_protocols(key);
+      need(1, key);
+      vmax_given = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(vmax_given > 0.0))
+        error->all(FLERR, "fix capillary/liquid: vmax {}: must be > 0 (m^3)", arg[iarg + 1]);
+      iarg += 2;
+    } else
+      error->all(FLERR, "fix capillary/liquid: unknown keyword '{}': allowed water, liquid, "
+                 "every, start, vmax", key);
+  }
+  if (protocol && (water < 0.0) == (liquid_given < 0.0))
+    error->all(FLERR, "fix capillary/liquid {}: give the liquid once: 'water W RHO' (mass "
+               "fraction, liquid density) or 'liquid V' (m^3)", mode_name());
+
+  vector_flag = 1;
+  size_vector = 8;
+  global_freq = 1;
+  extvector = 0;
+  restart_global = 1;
+
+  if (mode == PairGranCapillary::LIQUID_PROTOCOL2 || mode == PairGranCapillary::LIQUID_PROTOCOL3) {
+    peratom_flag = 1;
+    size_peratom_cols = 0;
+    peratom_freq = 1;
+    restart_peratom = 1;
+    create_attribute = 1;
+    maxexchange = 1;
+    FixCapillaryLiquid::grow_arrays(atom->nmax);
+    atom->add_callback(Atom::GROW);
+    atom->add_callback(Atom::RESTART);
+    for (int i = 0; i < atom->nlocal; i++) free_liquid[i] = 0.0;
+  }
+
+  total_liquid = -1.0;
+  vmax = -1.0;
+  pool = 0.0;
+  alpha = 0.0;
+  started = 0;
+  last_distribution = -1;
+  for (double &v : values) v = 0.0;
+  census_step = -1;
+  census_valid = 0;
+  warned_nowhere = warned_reach = 0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+FixCapillaryLiquid::~FixCapillaryLiquid()
+{
+  if (copymode) return;
+  if (free_liquid) {
+    atom->delete_callback(id, Atom::GROW);
+    atom->delete_callback(id, Atom::RESTART);
+  }
+  memory->destroy(free_liquid);
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixCapillaryLiquid::setmask()
+{
+  int mask = 0;
+  mask |= PRE_FORCE;
+  return mask;
+}
+
+const char *FixCapillaryLiquid::mode_name() const
+{
+  return mode_names[mode];
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::init()
+{
+  pair = dynamic_cast<PairGranCapillary *>(force->pair_match("gran/capillary", 1));
+  if (!pair)
+    error->all(FLERR, "fix capillary/liquid requires pair style gran/capillary (alone or as a "
+               "sub-style of pair_style hybrid/overlay)");
+  ensure_totals();
+  census_valid = 0;
+}
+
+/* ----------------------------------------------------------------------
+   the total liquid and the design volume, fixed at their first use (collective)
+------------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::ensure_totals()
+{
+  if (mode == PairGranCapillary::LIQUID_FIXED) return;
+  if (total_liquid < 0.0) {
+    if (water >= 0.0)
+      total_liquid = water * group->mass(igroup) / liquid_density;
+    else
+      total_liquid = liquid_given;
+  }
+  if (vmax_given > 0.0) vmax = vmax_given;
+  if (vmax < 0.0) {
+    // default: twice the mean liquid per particle, times the cube of the size ratio, i.e.
+    // the Protocol 1 bridge volume of the largest spheres when there is at least one bridge
+    // per particle
+    double lo = HUGE_VAL, hi = 0.0, lo_all = HUGE_VAL, hi_all = 0.0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if (atom->mask[i] & groupbit) {
+        lo = MIN(lo, atom->radius[i]);
+        hi = MAX(hi, atom->radius[i]);
+      }
+    MPI_Allreduce(&lo, &lo_all, 1, MPI_DOUBLE, MPI_MIN, world);
+    MPI_Allreduce(&hi, &hi_all, 1, MPI_DOUBLE, MPI_MAX, world);
+    const bigint count = group->count(igroup);
+    if (count > 0 && lo_all > 0.0) {
+      const double ratio = hi_all / lo_all;
+      vmax = 2.0 * total_liquid / (double) count * ratio * ratio * ratio;
+    } else
+      vmax = total_liquid;
+  }
+}
+
+double FixCapillaryLiquid::design_volume()
+{
+  ensure_totals();
+  return MAX(vmax, 0.0);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::setup_pre_force(int /*vflag*/)
+{
+  if (mode == PairGranCapillary::LIQUID_FIXED) return;
+  if (!started) {
+    start_liquid();
+    started = 1;
+    return;
+  }
+  pre_force(0);
+}
+
+void FixCapillaryLiquid::pre_force(int /*vflag*/)
+{
+  if (mode != PairGranCapillary::LIQUID_PROTOCOL1) return;
+  const bigint step = update->ntimestep;
+  if (step == last_distribution) return;
+  const bool due = every > 0 ? (step % every == 0) : (neighbor->ago == 0);
+  if (due) distribute("every");
+}
+
+/* ----------------------------------------------------------------------
+   the liquid at the start of the first run
+------------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::start_liquid()
+{
+  if (mode == PairGranCapillary::LIQUID_PROTOCOL1 || !start_free) {
+    distribute("start");
+    if (mode == PairGranCapillary::LIQUID_PROTOCOL1 || last_distribution == update->ntimestep)
+      return;
+  }
+  // Protocols 2, 3: the liquid as free liquid, in proportion to the atoms' masses
+  const double mass = group->mass(igroup);
+  if (mass > 0.0)
+    for (int i = 0; i < atom->nlocal; i++)
+      if (atom->mask[i] & groupbit) free_liquid[i] = total_liquid * (atom->rmass[i] / mass);
+  pool = 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   Protocol 1 over all pairs; if no pair can hold the liquid, nothing changes
+------------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::distribute(const char *why)
+{
+  double a = 0.0, largest = 0.0;
+  // liquid of broken bridges not yet collected is part of what is redistributed
+  double local = pair->drain_pool(), released = 0.0;
+  MPI_Allreduce(&local, &released, 1, MPI_DOUBLE, MPI_SUM, world);
+  pool += released;
+  if (total_liquid <= 0.0) {
+    last_distribution = update->ntimestep;
+    return;
+  }
+  const int nowhere = pair->protocol1(total_liquid, a, largest);
+  if (nowhere) {
+    if (!warned_nowhere && comm->me == 0)
+      error->warning(FLERR, "fix capillary/liquid {} ({}, step {}): no pair can hold the liquid "
+                     "({:.6g} m^3): {}; this warning is given once", mode_name(), why,
+                     update->ntimestep, total_liquid,
+                     mode == PairGranCapillary::LIQUID_PROTOCOL1
+                         ? "it stays in the pool until a distribution succeeds"
+                         : "the atoms keep it as free liquid, in proportion to their mass");
+    warned_nowhere = 1;
+    if (mode == PairGranCapillary::LIQUID_PROTOCOL1 && !started) pool = total_liquid;
+    return;
+  }
+  alpha = a;
+  pool = 0.0;
+  last_distribution = update->ntimestep;
+}
+
+/* ----------------------------------------------------------------------
+   output: 1 bridges, 2 bridge coordination number z = 2 bridges / atoms in the group,
+   3 liquid in bridges, 4 free liquid (per-atom free liquid and the Protocol 1 pool),
+   5 total liquid (3 + 4), 6 formations and 7 ruptures since the last output,
+   8 relative change of the total since the start ((5 - total) / total; 0 in mode fixed)
+------------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::census()
+{
+  double local[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, global[7];
+  if (pair) pair->census(local);
+  if (free_liquid)
+    for (int i = 0; i < atom->nlocal; i++) local[6] += free_liquid[i];
+  MPI_Allreduce(local, global, 7, MPI_DOUBLE, MPI_SUM, world);
+  pool += global[5];
+  const bigint count = group->count(igroup);
+  const double free_total = global[6] + pool;
+  const double total = global[1] + free_total;
+  values[0] = global[0];
+  values[1] = count > 0 ? 2.0 * global[0] / (double) count : 0.0;
+  values[2] = global[1];
+  values[3] = free_total;
+  values[4] = total;
+  values[5] = global[2];
+  values[6] = global[3];
+  values[7] = (mode != PairGranCapillary::LIQUID_FIXED && total_liquid > 0.0)
+      ? (total - total_liquid) / total_liquid
+      : 0.0;
+  if (global[4] > 0.0 && !warned_reach) {
+    warned_reach = 1;
+    if (comm->me == 0)
+      error->warning(FLERR, "fix capillary/liquid: {} bridge(s) ruptured at the neighbor reach "
+                     "(built for bridge volumes up to {:.6g} m^3) before their rupture distance; "
+                     "their liquid is kept; raise vmax; this warning is given once",
+                     global[4], vmax);
+  }
+}
+
+double FixCapillaryLiquid::compute_vector(int n)
+{
+  if (!census_valid || census_step != update->ntimestep) {
+    census();
+    census_step = update->ntimestep;
+    census_valid = 1;
+  }
+  return values[n];
+}
+
+/* ----------------------------------------------------------------------
+   global restart: the liquid, the design volume, the pool, the schedule
+------------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::write_restart(FILE *fp)
+{
+  // collect released liquid still held by the pair on each rank (collective)
+  if (pair) {
+    double local = pair->drain_pool(), released = 0.0;
+    MPI_Allreduce(&local, &released, 1, MPI_DOUBLE, MPI_SUM, world);
+    pool += released;
+  }
+  double list[N_RESTART] = {(double) mode, total_liquid,      vmax, pool, alpha,
+                            (double) started, (double) last_distribution, (double) every};
+  if (comm->me == 0) {
+    int size = N_RESTART * sizeof(double);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(list, sizeof(double), N_RESTART, fp);
+  }
+}
+
+void FixCapillaryLiquid::restart(char *buf)
+{
+  auto *list = (double *) buf;
+  if ((int) list[0] != mode)
+    error->all(FLERR, "fix capillary/liquid: the restart file holds mode {}, the input script "
+               "gives {}", mode_names[(int) list[0]], mode_name());
+  total_liquid = list[1];
+  vmax = vmax_given > 0.0 ? vmax_given : list[2];
+  pool = list[3];
+  alpha = list[4];
+  started = (int) list[5];
+  last_distribution = (bigint) list[6];
+}
+
+/* ----------------------------------------------------------------------
+   per-atom free liquid (Protocols 2, 3)
+------------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::grow_arrays(int nmax)
+{
+  memory->grow(free_liquid, nmax, "capillary/liquid:free_liquid");
+  vector_atom = free_liquid;
+}
+
+void FixCapillaryLiquid::copy_arrays(int i, int j, int /*delflag*/)
+{
+  free_liquid[j] = free_liquid[i];
+}
+
+void FixCapillaryLiquid::set_arrays(int i)
+{
+  free_liquid[i] = 0.0;
+}
+
+int FixCapillaryLiquid::pack_exchange(int i, double *buf)
+{
+  buf[0] = free_liquid[i];
+  return 1;
+}
+
+int FixCapillaryLiquid::unpack_exchange(int nlocal, double *buf)
+{
+  free_liquid[nlocal] = buf[0];
+  return 1;
+}
+
+int FixCapillaryLiquid::pack_restart(int i, double *buf)
+{
+  // buf[0] is the count, by the convention of atom->extra
+  buf[0] = 2;
+  buf[1] = free_liquid[i];
+  return 2;
+}
+
+void FixCapillaryLiquid::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  m++;
+  free_liquid[nlocal] = extra[nlocal][m];
+}
+
+int FixCapillaryLiquid::size_restart(int /*nlocal*/)
+{
+  return 2;
+}
+
+int FixCapillaryLiquid::maxsize_restart()
+{
+  return 2;
+}
+
+double FixCapillaryLiquid::memory_usage()
+{
+  return free_liquid ? (double) atom->nmax * sizeof(double) : 0.0;
+}

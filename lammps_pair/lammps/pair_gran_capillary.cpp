@@ -1,0 +1,1541 @@
+/* ----------------------------------------------------------------------
+   capbridge — LAMMPS binding: pair style gran/capillary
+
+   Per pair of finite-size spheres i, j (radii r_i, r_j, centre distance r,
+   gap = r - r_i - r_j, unit normal n from j to i):
+
+   normal    F_n = f_contact - f_capillary   (repulsion > 0, force on i = F_n n)
+     f_contact   = k_n (-gap) + 2 alpha_n sqrt(m k_n) (-gap_rate)     gap < 0 only
+                   (Richefeu 2007 eq. 2; damping eq. 3 only while approaching,
+                   gap_rate < 0; m = m_i m_j / (m_i + m_j)); f_contact >= 0
+     f_capillary = cb_force(law, r_i, r_j, V, gap) while the bridge exists, else 0
+   tangential spring k_t on the incremental shear displacement (history, projected
+     onto the tangent plane each step), Coulomb limit
+       |f_t| <= mu (f_contact + f_capillary)   friction wet (default)
+       |f_t| <= mu f_contact                   friction dry
+     We read eq. 12 of Richefeu 2007, mu (f_n - f_n^c), with f_n the contact force and
+     f_n^c = -f_capillary the (attractive, negative) capillary force: the capillary
+     attraction adds to the normal load that friction can mobilise.
+   bridge    the cb_bridge of the pair (volume, active) in the pair history; its
+     transitions are the core's (cb_bridge_update): formation at contact with liquid
+     available, rupture beyond the law's rupture distance.
+
+   Liquid (the volume a new bridge receives, where a broken bridge's liquid goes):
+     fixed      the type pair's `volume` (or fix capillary/liquid fixed V)
+     protocol1  fix capillary/liquid redistributes all liquid over all pairs every N
+                steps (protocol1()); released liquid waits in a global pool
+     protocol2  per-atom free liquid (fix capillary/liquid): a broken bridge's liquid is
+                split in proportion to the radii and kept by the two atoms; a new contact
+                takes the free liquid its atoms offer
+     protocol3  as protocol2, but each atom's share goes to its lowest bridge on its
+                lower hemisphere (kept as free liquid if it has none)
+   Protocols 2 and 3 under MPI: see update_bridges() and exchange_liquid().
+------------------------------------------------------------------------- */
+
+#include "pair_gran_capillary.h"
+
+#include "fix_capillary_liquid.h"
+
+#include "atom.h"
+#include "citeme.h"
+#include "comm.h"
+#include "error.h"
+#include "fix.h"
+#include "fix_dummy.h"
+#include "fix_neigh_history.h"
+#include "force.h"
+#include "math_const.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using MathConst::MY_PI;
+
+static const char cite_capbridge[] =
+    "pair gran/capillary and fix capillary/liquid (capbridge):\n\n"
+    "@Article{Richefeu2007,\n"
+    " author = {V. Richefeu and M. S. El Youssoufi and R. Peyroux and F. Radja{\\\"\\i}},\n"
+    " title = {A model of capillary cohesion for numerical simulations of 3D polydisperse\n"
+    "          granular media},\n"
+    " journal = {International Journal for Numerical and Analytical Methods in Geomechanics},\n"
+    " year = 2007,\n"
+    " doi = {10.1002/nag.674}\n"
+    "}\n\n"
+    "@Article{Gladkyy2014,\n"
+    " author = {A. Gladkyy and R. Schwarze},\n"
+    " title = {Comparison of different capillary bridge models for application in the\n"
+    "          discrete element method},\n"
+    " journal = {Granular Matter},\n"
+    " year = 2014,\n"
+    " volume = 16,\n"
+    " pages = {911--920},\n"
+    " doi = {10.1007/s10035-014-0527-z}\n"
+    "}\n\n";
+
+namespace {
+enum { REVERSE_EVENTS = 1, FORWARD_OFFERS = 2 };
+constexpr int COMM_REVERSE_SIZE = 4;
+constexpr int COMM_FORWARD_SIZE = 3;
+// The neighbor reach exceeds the largest rupture distance by this fraction, so that a
+// bridge held at exactly its rupture distance is never cut by the reach test.
+constexpr double REACH_MARGIN = 1e-9;
+
+const char *const coeff_syntax =
+    "syntax: pair_coeff I J kn kt damping mu law LAW [keyword value ...] or "
+    "pair_coeff I J contact none law LAW [keyword value ...]; keywords: gamma, theta, "
+    "rupture, overlap, validity, c, volume";
+
+cb_bridge *bridge_of(double *history)
+{
+  return reinterpret_cast<cb_bridge *>(history + PairGranCapillary::HIST_BRIDGE);
+}
+
+// Does a contact at `offset` (contact height minus centre height) beat the current
+// receiver?  The rule is cb_protocol3_receiver's (the lowest contact strictly below the
+// centre); equal heights go to the smaller partner tag so that the choice does not
+// depend on the order in which ranks and neighbor lists present the bridges.
+bool better_receiver(double offset, tagint partner, double best_offset, tagint best_partner)
+{
+  double heights[2];
+  size_t n = 0;
+  if (best_partner) heights[n++] = best_offset;
+  heights[n++] = offset;
+  long index = -1;
+  if (cb_protocol3_receiver(0.0, heights, n, &index) != CB_OK) return false;
+  if (index < 0) return false;
+  if (n == 1) return true;
+  if (index == 1) return true;
+  return offset == best_offset && partner < best_partner;
+}
+}    // namespace
+
+/* ---------------------------------------------------------------------- */
+
+PairGranCapillary::PairGranCapillary(LAMMPS *lmp) : Pair(lmp)
+{
+  single_enable = 1;
+  no_virial_fdotr_compute = 1;
+  centroidstressflag = CENTROID_NOTAVAIL;
+  finitecutflag = 1;
+  beyond_contact = 1;                 // bridges act, and keep their history, beyond contact
+  nondefault_history_transfer = 1;    // bridge state is copied, shear negated
+
+  single_extra = SV_COUNT;
+  svector = new double[SV_COUNT];
+
+  kn = kt = damping = mu = volume = cut_pair = nullptr;
+  contact_on = law_of = nullptr;
+  rad_min = rad_max = nullptr;
+  friction_wet = 1;
+  dt = update->dt;
+  freeze_group_bit = 0;
+
+  fix_history = nullptr;
+  fix_liquid = nullptr;
+  liquid_mode = LIQUID_FIXED;
+  liquid_groupbit = 0;
+
+  nmax_scratch = 0;
+  candidates = released = offer = deposit = best_height = nullptr;
+  best_partner = nullptr;
+  commflag = 0;
+
+  n_formed = n_ruptured = n_reach = pool_released = 0.0;
+  dt_warned = reach_warned = 0;
+  neighprev = 0;
+
+  if (lmp->citeme) lmp->citeme->add(cite_capbridge);
+
+  // a placeholder keeps the fix order of the input script until init_style() puts the
+  // NEIGH_HISTORY fix in its place (the same scheme as LAMMPS's granular styles)
+  fix_dummy = dynamic_cast<FixDummy *>(
+      modify->add_fix("NEIGH_HISTORY_CAPILLARY_DUMMY" + std::to_string(instance_me) + " all DUMMY"));
+}
+
+/* ---------------------------------------------------------------------- */
+
+PairGranCapillary::~PairGranCapillary()
+{
+  if (copymode) return;
+  delete[] svector;
+  svector = nullptr;
+
+  if (!fix_history)
+    modify->delete_fix("NEIGH_HISTORY_CAPILLARY_DUMMY" + std::to_string(instance_me));
+  else
+    modify->delete_fix("NEIGH_HISTORY_CAPILLARY" + std::to_string(instance_me));
+
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+    memory->destroy(kn);
+    memory->destroy(kt);
+    memory->destroy(damping);
+    memory->destroy(mu);
+    memory->destroy(volume);
+    memory->destroy(cut_pair);
+    memory->destroy(contact_on);
+    memory->destroy(law_of);
+    delete[] rad_min;
+    delete[] rad_max;
+  }
+  for (auto *l : laws) {
+    cb_law_release(l);
+    delete l;
+  }
+  memory->destroy(candidates);
+  memory->destroy(released);
+  memory->destroy(offer);
+  memory->destroy(deposit);
+  memory->destroy(best_height);
+  memory->destroy(best_partner);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairGranCapillary::allocate()
+{
+  allocated = 1;
+  const int n = atom->ntypes;
+  memory->create(setflag, n + 1, n + 1, "pair:setflag");
+  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
+  memory->create(kn, n + 1, n + 1, "pair:kn");
+  memory->create(kt, n + 1, n + 1, "pair:kt");
+  memory->create(damping, n + 1, n + 1, "pair:damping");
+  memory->create(mu, n + 1, n + 1, "pair:mu");
+  memory->create(volume, n + 1, n + 1, "pair:volume");
+  memory->create(cut_pair, n + 1, n + 1, "pair:cut_pair");
+  memory->create(contact_on, n + 1, n + 1, "pair:contact_on");
+  memory->create(law_of, n + 1, n + 1, "pair:law_of");
+  for (int i = 0; i <= n; i++)
+    for (int j = 0; j <= n; j++) {
+      setflag[i][j] = 0;
+      kn[i][j] = kt[i][j] = damping[i][j] = mu[i][j] = 0.0;
+      volume[i][j] = -1.0;
+      cut_pair[i][j] = 0.0;
+      contact_on[i][j] = 0;
+      law_of[i][j] = -1;
+    }
+  rad_min = new double[n + 1];
+  rad_max = new double[n + 1];
+  for (int i = 0; i <= n; i++) rad_min[i] = rad_max[i] = 0.0;
+  coeff_text.assign((size_t) (n + 1) * (n + 1), std::string());
+}
+
+/* ----------------------------------------------------------------------
+   pair_style gran/capillary [friction wet|dry]
+------------------------------------------------------------------------- */
+
+void PairGranCapillary::settings(int narg, char **arg)
+{
+  friction_wet = 1;
+  int iarg = 0;
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "friction") == 0) {
+      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "pair_style gran/capillary friction", error);
+      if (strcmp(arg[iarg + 1], "wet") == 0)
+        friction_wet = 1;
+      else if (strcmp(arg[iarg + 1], "dry") == 0)
+        friction_wet = 0;
+      else
+        error->all(FLERR, "pair_style gran/capillary: friction '{}': allowed wet, dry",
+                   arg[iarg + 1]);
+      iarg += 2;
+    } else
+      error->all(FLERR, "pair_style gran/capillary: unknown keyword '{}': allowed friction",
+                 arg[iarg]);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   pair_coeff I J kn kt damping mu law LAW [keyword value ...]
+   pair_coeff I J contact none law LAW [keyword value ...]
+------------------------------------------------------------------------- */
+
+void PairGranCapillary::coeff(int narg, char **arg)
+{
+  if (narg < 2) error->all(FLERR, "pair_coeff: missing type indices; {}", coeff_syntax);
+  if (!allocated) allocate();
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+  parse_coeff(ilo, ihi, jlo, jhi, narg - 2, arg + 2);
+}
+
+void PairGranCapillary::parse_coeff(int ilo, int ihi, int jlo, int jhi, int narg, char **arg)
+{
+  auto range = [](int lo, int hi) {
+    return lo == hi ? std::to_string(lo) : fmt::format("{}*{}", lo, hi);
+  };
+  const std::string where = fmt::format("pair_coeff {} {}", range(ilo, ihi), range(jlo, jhi));
+  auto number = [&](int k, const char *name, const char *meaning) -> double {
+    if (k >= narg)
+      error->all(FLERR, "{}: missing coefficient {} ({}); {}", where, name, meaning, coeff_syntax);
+    if (!utils::is_double(arg[k])) {
+      if (strcmp(arg[k], "law") == 0 || strcmp(arg[k], "contact") == 0)
+        error->all(FLERR, "{}: missing coefficient {} ({}) before '{}'; {}", where, name,
+                   meaning, arg[k], coeff_syntax);
+      error->all(FLERR, "{}: coefficient {} ({}) must be a number, not '{}'; {}", where, name,
+                 meaning, arg[k], coeff_syntax);
+    }
+    return utils::numeric(FLERR, arg[k], false, lmp);
+  };
+
+  double kn_one = 0.0, kt_one = 0.0, damping_one = 0.0, mu_one = 0.0;
+  int contact_one = 1;
+  int iarg = 0;
+  if (narg > 0 && strcmp(arg[0], "contact") == 0) {
+    if (narg < 2 || strcmp(arg[1], "none") != 0)
+      error->all(FLERR, "{}: 'contact' must be followed by 'none' (no contact force: the "
+                 "capillary force only); {}", where, coeff_syntax);
+    contact_one = 0;
+    iarg = 2;
+  } else {
+    kn_one = number(0, "kn", "normal stiffness, N/m");
+    kt_one = number(1, "kt", "tangential stiffness, N/m");
+    damping_one = number(2, "damping", "normal damping rate alpha_n, 0..1");
+    mu_one = number(3, "mu", "friction coefficient");
+    if (kn_one < 0.0) error->all(FLERR, "{}: kn = {}: must be >= 0 (N/m)", where, kn_one);
+    if (kt_one < 0.0) error->all(FLERR, "{}: kt = {}: must be >= 0 (N/m)", where, kt_one);
+    if (damping_one < 0.0 || damping_one > 1.0)
+      error->all(FLERR, "{}: damping = {}: the damping rate alpha_n must lie in [0, 1] "
+                 "(Richefeu 2007 eq. 3)", where, damping_one);
+    if (mu_one < 0.0) error->all(FLERR, "{}: mu = {}: must be >= 0", where, mu_one);
+    iarg = 4;
+  }
+
+  if (iarg >= narg || strcmp(arg[iarg], "law") != 0)
+    error->all(FLERR, "{}: missing 'law LAW' after the contact coefficients{} (laws: {}); {}",
+               where, iarg < narg ? fmt::format(", found '{}'", arg[iarg]) : "",
+               cb_law_names(), coeff_syntax);
+  if (iarg + 1 >= narg)
+    error->all(FLERR, "{}: 'law' needs a law name: allowed {}", where, cb_law_names());
+  cb_model model;
+  if (cb_model_from_name(arg[iarg + 1], &model) != CB_OK)
+    error->all(FLERR, "{}: unknown law '{}': allowed {}", where, arg[iarg + 1], cb_law_names());
+  std::string spec = arg[iarg + 1];
+  iarg += 2;
+
+  // gamma has no default: a placeholder until the keyword is read
+  cb_law one;
+  cb_law_init(&one, model, 1.0, 0.0);
+  int have_gamma = 0;
+  double volume_one = -1.0;
+  while (iarg < narg) {
+    const char *key = arg[iarg];
+    if (iarg + 1 >= narg)
+      error->all(FLERR, "{}: keyword '{}' needs a value", where, key);
+    const char *value = arg[iarg + 1];
+    if (strcmp(key, "volume") == 0) {
+      if (!utils::is_double(value))
+        error->all(FLERR, "{}: volume '{}' must be a number (m^3)", where, value);
+      volume_one = utils::numeric(FLERR, value, false, lmp);
+      if (!(volume_one >= 0.0) || !std::isfinite(volume_one))
+        error->all(FLERR, "{}: volume = {}: the bridge volume must be >= 0 (m^3; 0 = no "
+                   "bridges for these types)", where, value);
+    } else {
+      cb_message msg;
+      msg.text[0] = '\0';
+      if (cb_law_configure(&one, key, value, &msg) != CB_OK)
+        error->all(FLERR, "{}: {}", where, msg.text);
+      if (strcmp(key, "gamma") == 0) have_gamma = 1;
+      spec += fmt::format(" {} {}", key, value);
+    }
+    iarg += 2;
+  }
+  if (!have_gamma)
+    error->all(FLERR, "{}: law {} needs 'gamma' (the surface tension, N/m)", where,
+               cb_model_name(model));
+
+  // one prepared law per distinct specification
+  int index = -1;
+  for (size_t k = 0; k < law_text.size(); k++)
+    if (law_text[k] == spec) index = (int) k;
+  if (index < 0) {
+    cb_message msg;
+    msg.text[0] = '\0';
+    auto *prepared = new cb_law(one);
+    if (cb_law_prepare(prepared, &msg) != CB_OK) {
+      cb_law_release(prepared);
+      delete prepared;
+      error->all(FLERR, "{}: law {}: {}", where, cb_model_name(model), msg.text);
+    }
+    laws.push_back(prepared);
+    law_text.push_back(spec);
+    index = (int) laws.size() - 1;
+  }
+
+  std::string text;
+  for (int k = 0; k < narg; k++) text += (k ? " " : "") + std::string(arg[k]);
+
+  int count = 0;
+  const int n = atom->ntypes;
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      kn[i][j] = kn_one;
+      kt[i][j] = kt_one;
+      damping[i][j] = damping_one;
+      mu[i][j] = mu_one;
+      contact_on[i][j] = contact_one;
+      volume[i][j] = volume_one;
+      law_of[i][j] = index;
+      coeff_text[(size_t) i * (n + 1) + j] = text;
+      setflag[i][j] = 1;
+      count++;
+    }
+  if (count == 0) error->all(FLERR, "{}: no type pair I <= J in these ranges", where);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairGranCapillary::init_style()
+{
+  if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag)
+    error->all(FLERR, "Pair gran/capillary requires atom attributes radius, rmass, omega "
+               "(atom_style sphere)");
+  if (comm->ghost_velocity == 0)
+    error->all(FLERR, "Pair gran/capillary requires ghost atoms store velocity "
+               "(comm_modify vel yes)");
+
+  // a plain half list reaching the type-pair cutoff (init_one): bridges act beyond
+  // contact, so the list must hold every pair up to the largest rupture distance
+  neighbor->add_request(this, NeighConst::REQ_HISTORY);
+
+  dt = update->dt;
+
+  if (fix_history == nullptr) {
+    auto cmd = fmt::format("NEIGH_HISTORY_CAPILLARY{} all NEIGH_HISTORY {}", instance_me,
+                           (int) SIZE_HISTORY);
+    fix_history = dynamic_cast<FixNeighHistory *>(modify->replace_fix(
+        "NEIGH_HISTORY_CAPILLARY_DUMMY" + std::to_string(instance_me), cmd, 1));
+    fix_history->pair = this;
+  }
+  fix_history = dynamic_cast<FixNeighHistory *>(
+      modify->get_fix_by_id("NEIGH_HISTORY_CAPILLARY" + std::to_string(instance_me)));
+  if (!fix_history) error->all(FLERR, "Pair gran/capillary: could not find its NEIGH_HISTORY fix");
+
+  auto freezes = modify->get_fix_by_style("^freeze");
+  if (freezes.size() > 1) error->all(FLERR, "Only one fix freeze command at a time allowed");
+  freeze_group_bit = freezes.empty() ? 0 : freezes.front()->groupbit;
+
+  // the liquid
+  auto liquids = modify->get_fix_by_style("^capillary/liquid$");
+  if (liquids.size() > 1) error->all(FLERR, "Only one fix capillary/liquid at a time allowed");
+  fix_liquid = liquids.empty() ? nullptr : dynamic_cast<FixCapillaryLiquid *>(liquids.front());
+  liquid_mode = fix_liquid ? fix_liquid->mode : LIQUID_FIXED;
+  liquid_groupbit = fix_liquid ? fix_liquid->groupbit : 0;
+
+  const int n = atom->ntypes;
+  for (int i = 1; i <= n; i++)
+    for (int j = i; j <= n; j++) {
+      if (!setflag[i][j]) continue;
+      if (liquid_mode == LIQUID_FIXED) {
+        if (volume[i][j] < 0.0 && !(fix_liquid && fix_liquid->fixed_volume >= 0.0))
+          error->all(FLERR, "pair_coeff {} {}: no bridge volume: give 'volume V' (m^3) or "
+                     "define fix capillary/liquid", i, j);
+      } else if (volume[i][j] > 0.0) {
+        error->all(FLERR, "pair_coeff {} {}: volume {} conflicts with fix capillary/liquid "
+                   "{}: the liquid comes from the fix (only 'volume 0', a dry type pair, is "
+                   "allowed)", i, j, volume[i][j], fix_liquid->mode_name());
+      }
+    }
+  if (liquid_mode != LIQUID_FIXED) {
+    // Protocol 1 (also the initial distribution of Protocols 2, 3) is one call of the
+    // core over all pairs: one law for every wet type pair
+    int first = -1;
+    for (int i = 1; i <= n; i++)
+      for (int j = i; j <= n; j++)
+        if (setflag[i][j] && volume[i][j] != 0.0) {
+          if (first < 0) first = law_of[i][j];
+          else if (law_text[law_of[i][j]] != law_text[first])
+            error->all(FLERR, "fix capillary/liquid {}: every wet type pair must use the same "
+                       "law (Protocol 1 distributes over all pairs with one law): '{}' and '{}'",
+                       fix_liquid->mode_name(), law_text[first], law_text[law_of[i][j]]);
+        }
+  }
+
+  // per-atom liquid exchange within a force evaluation (Protocols 2, 3)
+  if (liquid_mode == LIQUID_PROTOCOL2 || liquid_mode == LIQUID_PROTOCOL3) {
+    comm_forward = COMM_FORWARD_SIZE;
+    comm_reverse = COMM_REVERSE_SIZE;
+  } else {
+    comm_forward = comm_reverse = 0;
+  }
+
+  radius_ranges();
+}
+
+/* ----------------------------------------------------------------------
+   smallest and largest radius per type: atoms present and future fix pour/deposit
+------------------------------------------------------------------------- */
+
+void PairGranCapillary::radius_ranges()
+{
+  const int n = atom->ntypes;
+  std::vector<double> lo(n + 1, HUGE_VAL), hi(n + 1, 0.0);
+  for (auto &ifix : modify->get_fix_by_style("^(pour|deposit)")) {
+    for (int t = 1; t <= n; t++) {
+      int itype = t;
+      auto *r = (double *) ifix->extract("radius", itype);
+      if (r && *r > 0.0) {
+        hi[t] = MAX(hi[t], *r);
+        lo[t] = MIN(lo[t], *r);
+      }
+    }
+  }
+  double *radius = atom->radius;
+  int *type = atom->type;
+  for (int i = 0; i < atom->nlocal; i++) {
+    hi[type[i]] = MAX(hi[type[i]], radius[i]);
+    if (radius[i] > 0.0) lo[type[i]] = MIN(lo[type[i]], radius[i]);
+  }
+  MPI_Allreduce(&lo[1], &rad_min[1], n, MPI_DOUBLE, MPI_MIN, world);
+  MPI_Allreduce(&hi[1], &rad_max[1], n, MPI_DOUBLE, MPI_MAX, world);
+  for (int t = 1; t <= n; t++)
+    if (rad_max[t] <= 0.0) rad_min[t] = 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   the bridge volume the neighbor reach of a type pair is built for
+------------------------------------------------------------------------- */
+
+double PairGranCapillary::design_volume(int itype, int jtype) const
+{
+  if (itype > jtype) std::swap(itype, jtype);
+  if (volume[itype][jtype] == 0.0) return 0.0;
+  if (liquid_mode == LIQUID_FIXED) {
+    if (volume[itype][jtype] > 0.0) return volume[itype][jtype];
+    return fix_liquid ? MAX(fix_liquid->fixed_volume, 0.0) : 0.0;
+  }
+  return fix_liquid ? fix_liquid->design_volume() : 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   the largest rupture distance of a bridge of volume vol between spheres of these
+   types: a 5 x 5 grid over both radius ranges (corners included); every law in the
+   core has its largest rupture distance at a corner (Lian: none depends on the radii;
+   Willett: at the smallest harmonic radius), the grid covers the table law
+------------------------------------------------------------------------- */
+
+double PairGranCapillary::max_rupture(int itype, int jtype, double vol) const
+{
+  if (!(vol > 0.0)) return 0.0;
+  cb_law extend = *law(MIN(itype, jtype), MAX(itype, jtype));    // shallow: never released
+  extend.validity = CB_VALIDITY_EXTEND;
+  double largest = 0.0;
+  const int steps = 4;
+  for (int a = 0; a <= steps; a++)
+    for (int b = 0; b <= steps; b++) {
+      double r1 = rad_min[itype] + (rad_max[itype] - rad_min[itype]) * a / steps;
+      double r2 = rad_min[jtype] + (rad_max[jtype] - rad_min[jtype]) * b / steps;
+      if (!(r1 > 0.0) || !(r2 > 0.0)) continue;
+      double d = 0.0;
+      int status = cb_rupture_distance(&extend, r1, r2, vol, &d);
+      if (status != CB_OK)
+        error->all(FLERR, "pair gran/capillary: types {} {}: law {} has no rupture distance for "
+                   "a bridge of {} m^3 between radii {} and {} m: {}", itype, jtype,
+                   cb_model_name(extend.model), vol, r1, r2,
+                   cb_status_message((cb_status) status));
+      largest = MAX(largest, d);
+    }
+  return largest;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double PairGranCapillary::init_one(int i, int j)
+{
+  if (setflag[i][j] == 0)
+    error->all(FLERR, "pair gran/capillary: no pair_coeff for types {} {} (coefficients are not "
+               "mixed: give every type pair I <= J)", i, j);
+
+  double ri = rad_max[i], rj = rad_max[j];
+  if (ri <= 0.0 || rj <= 0.0) {
+    // no atom of this type yet: reach as far as the largest type pair with atoms
+    double rmax = 0.0;
+    for (int t = 1; t <= atom->ntypes; t++) rmax = MAX(rmax, rad_max[t]);
+    if (ri <= 0.0) ri = rmax;
+    if (rj <= 0.0) rj = rmax;
+  }
+  double reach = 0.0;
+  if (rad_max[i] > 0.0 && rad_max[j] > 0.0)
+    reach = max_rupture(i, j, design_volume(i, j)) * (1.0 + REACH_MARGIN);
+  double cut = ri + rj + reach;
+
+  // mirror the symmetric coefficients
+  kn[j][i] = kn[i][j];
+  kt[j][i] = kt[i][j];
+  damping[j][i] = damping[i][j];
+  mu[j][i] = mu[i][j];
+  volume[j][i] = volume[i][j];
+  contact_on[j][i] = contact_on[i][j];
+  law_of[j][i] = law_of[i][j];
+  cut_pair[i][j] = cut_pair[j][i] = cut;
+  return cut;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double PairGranCapillary::radii2cut(double r1, double r2)
+{
+  double reach = 0.0;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (!setflag[i][j]) continue;
+      double vol = design_volume(i, j);
+      if (!(vol > 0.0)) continue;
+      double d = 0.0;
+      cb_law extend = *law(i, j);
+      extend.validity = CB_VALIDITY_EXTEND;
+      if (cb_rupture_distance(&extend, r1, r2, vol, &d) == CB_OK) reach = MAX(reach, d);
+    }
+  return r1 + r2 + reach * (1.0 + REACH_MARGIN);
+}
+
+double PairGranCapillary::atom2cut(int i)
+{
+  return radii2cut(atom->radius[i], atom->radius[i]);
+}
+
+/* ----------------------------------------------------------------------
+   history transfer to the partner: shear displacement negated, bridge copied
+------------------------------------------------------------------------- */
+
+void PairGranCapillary::transfer_history(double *source, double *target, int /*itype*/,
+                                         int /*jtype*/)
+{
+  for (int k = 0; k < 3; k++) target[HIST_SHEAR + k] = -source[HIST_SHEAR + k];
+  for (int k = 0; k < CB_BRIDGE_DOUBLES; k++) target[HIST_BRIDGE + k] = source[HIST_BRIDGE + k];
+}
+
+/* ----------------------------------------------------------------------
+   each pair counted once over all ranks: with newton on a pair is in one rank's list;
+   with newton off a pair with a ghost partner is in both owners' lists and is counted
+   where the owned atom has the smaller tag
+------------------------------------------------------------------------- */
+
+int PairGranCapillary::counted(int i, int j) const
+{
+  if (force->newton_pair || j < atom->nlocal) return 1;
+  return atom->tag[i] < atom->tag[j];
+}
+
+int PairGranCapillary::wet_pair(int i, int j, int itype, int jtype) const
+{
+  if (volume[itype][jtype] == 0.0) return 0;
+  if (fix_liquid) {
+    int *mask = atom->mask;
+    if (!(mask[i] & liquid_groupbit) || !(mask[j] & liquid_groupbit)) return 0;
+  }
+  return 1;
+}
+
+void PairGranCapillary::check_cb(int status, const char *what, int itype, int jtype, double r1,
+                                 double r2, double vol, double gap)
+{
+  if (status == CB_OK) return;
+  error->one(FLERR, "pair gran/capillary: {} failed for types {} {} (law '{}', r1 = {} m, "
+             "r2 = {} m, volume = {} m^3, gap = {} m): {}", what, itype, jtype,
+             law_text[law_of[itype][jtype]], r1, r2, vol, gap,
+             cb_status_message((cb_status) status));
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairGranCapillary::grow_scratch()
+{
+  if (atom->nmax <= nmax_scratch) return;
+  nmax_scratch = atom->nmax;
+  memory->destroy(candidates);
+  memory->destroy(released);
+  memory->destroy(offer);
+  memory->destroy(deposit);
+  memory->destroy(best_height);
+  memory->destroy(best_partner);
+  memory->create(candidates, nmax_scratch, "pair:candidates");
+  memory->create(released, nmax_scratch, "pair:released");
+  memory->create(offer, nmax_scratch, "pair:offer");
+  memory->create(deposit, nmax_scratch, "pair:deposit");
+  memory->create(best_height, nmax_scratch, "pair:best_height");
+  memory->create(best_partner, nmax_scratch, "pair:best_partner");
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairGranCapillary::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+  if (neighbor->ago == 0) check_timestep();    // at setup and after every re-neighboring
+
+  if (liquid_mode == LIQUID_PROTOCOL2 || liquid_mode == LIQUID_PROTOCOL3) {
+    update_bridges();
+    exchange_liquid();
+  }
+  form_bridges_and_forces();
+}
+
+/* ----------------------------------------------------------------------
+   Protocols 2, 3, phase 1: advance every existing bridge (hold or rupture) and record,
+   per atom (owned and ghost),
+     released[a]      liquid a broken bridge hands to atom a (cb_protocol2_release:
+                      the split in proportion to the radii, exact)
+     candidates[a]    dry pairs of atom a in contact that may form a bridge now
+     best_height[a], best_partner[a]   Protocol 3: atom a's lowest bridge below its centre
+                      (contact height minus centre height, and the partner's tag)
+   With newton on a pair is seen by one rank only, which records both atoms (ghost
+   entries go back to their owners by reverse communication).  With newton off a pair
+   with a ghost partner is seen by both owners: each records its own atom only.
+------------------------------------------------------------------------- */
+
+void PairGranCapillary::update_bridges()
+{
+  grow_scratch();
+  const int nall = atom->nlocal + atom->nghost;
+  for (int a = 0; a < nall; a++) {
+    candidates[a] = released[a] = offer[a] = deposit[a] = 0.0;
+    best_height[a] = 0.0;
+    best_partner[a] = 0;
+  }
+
+  double **x = atom->x;
+  double *radius = atom->radius;
+  int *type = atom->type;
+  tagint *tag = atom->tag;
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  const int protocol3 = liquid_mode == LIQUID_PROTOCOL3;
+
+  const int inum = list->inum;
+  int *ilist = list->ilist;
+  int *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+  double **firstvalue = fix_history->firstvalue;
+  double *special = force->special_lj;
+
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const int itype = type[i];
+    int *jlist = firstneigh[i];
+    double *allhistory = firstvalue[i];
+    for (int jj = 0; jj < numneigh[i]; jj++) {
+      int j = jlist[jj];
+      if (special[sbmask(j)] == 0.0) continue;
+      j &= NEIGHMASK;
+      const int jtype = type[j];
+      double *history = &allhistory[SIZE_HISTORY * jj];
+      cb_bridge *bridge = bridge_of(history);
+      const double delx = x[i][0] - x[j][0];
+      const double dely = x[i][1] - x[j][1];
+      const double delz = x[i][2] - x[j][2];
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      const double r = sqrt(rsq);
+      const double gap = r - (radius[i] + radius[j]);
+
+      if (bridge->active != 0.0) {
+        double vol = 0.0;
+        if (rsq >= cutsq[itype][jtype]) {
+          vol = bridge->volume;    // beyond the reach: ruptured before the pair is lost
+          bridge->volume = bridge->active = 0.0;
+          if (counted(i, j)) n_reach += 1.0;
+        } else {
+          cb_transition transition;
+          int status = cb_bridge_update(law(itype, jtype), radius[i], radius[j], gap, 0.0,
+                                        bridge, &transition, &vol);
+          check_cb(status, "bridge update", itype, jtype, radius[i], radius[j],
+                   bridge->volume, gap);
+          if (transition != CB_BRIDGE_RUPTURED) vol = 0.0;
+        }
+        if (vol > 0.0) {
+          if (counted(i, j)) n_ruptured += 1.0;
+          double share_i = 0.0, share_j = 0.0;
+          int status = cb_protocol2_release(vol, radius[i], radius[j], &share_i, &share_j);
+          check_cb(status, "liquid release", itype, jtype, radius[i], radius[j], vol, gap);
+          released[i] += share_i;
+          if (newton_pair || j < nlocal) released[j] += share_j;
+        }
+      }
+      if (bridge->active != 0.0) {
+        if (protocol3) {
+          // contact point on sphere a: centre + r_a (partner - centre) / r
+          const double offset_i = -radius[i] * delz / r;
+          if (better_receiver(offset_i, tag[j], best_height[i], best_partner[i])) {
+            best_height[i] = offset_i;
+            best_partner[i] = tag[j];
+          }
+          if (newton_pair || j < nlocal) {
+            const double offset_j = radius[j] * delz / r;
+            if (better_receiver(offset_j, tag[i], best_height[j], best_partner[j])) {
+              best_height[j] = offset_j;
+              best_partner[j] = tag[i];
+            }
+          }
+        }
+      } else if (gap <= 0.0 && wet_pair(i, j, itype, jtype)) {
+        candidates[i] += 1.0;
+        if (newton_pair || j < nlocal) candidates[j] += 1.0;
+      }
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   Protocols 2, 3, the owners' bookkeeping between the two phases.
+   1. newton on: ghost entries (released shares, candidate counts, receivers) are summed
+      (merged) into the owners by reverse communication, so each atom's owner knows all
+      of it; newton off: each owner recorded its own atoms already.
+   2. the owner of atom a: Protocol 3 with a receiver: deposit[a] = released[a] (goes to
+      that bridge); else free[a] += released[a].  Then, if a has candidates,
+      offer[a] = free[a] / candidates[a] and free[a] = 0: the whole free liquid is handed
+      out, an equal part to each new contact (Richefeu's "the new bridge takes it" with
+      several new contacts at once; cb_protocol2_take adds the two offers of a pair).
+   3. forward communication gives every ghost its owner's offer, deposit and receiver, so
+      that both ranks of a newton-off pair form the bridge with the same volume
+      offer[i] + offer[j], and the receiving bridge (on whichever rank holds it) gets the
+      deposit.
+   Conservation: every released share is added to exactly one owner (1.), every offer is
+   consumed by exactly one pair (counted once; both copies of a newton-off pair hold the
+   same volume and the pair is counted once), and offer * candidates equals the free
+   liquid up to one rounding of the division.
+------------------------------------------------------------------------- */
+
+void PairGranCapillary::exchange_liquid()
+{
+  if (force->newton_pair) {
+    commflag = REVERSE_EVENTS;
+    comm->reverse_comm(this);
+  }
+  double *free_liquid = fix_liquid->free_liquid;
+  const int protocol3 = liquid_mode == LIQUID_PROTOCOL3;
+  for (int a = 0; a < atom->nlocal; a++) {
+    if (released[a] > 0.0) {
+      if (protocol3 && best_partner[a] != 0)
+        deposit[a] = released[a];
+      else
+        free_liquid[a] += released[a];
+    }
+    if (candidates[a] > 0.0 && free_liquid[a] > 0.0) {
+      offer[a] = free_liquid[a] / candidates[a];
+      free_liquid[a] = 0.0;
+    } else
+      offer[a] = 0.0;
+  }
+  commflag = FORWARD_OFFERS;
+  comm->forward_comm(this);
+}
+
+/* ----------------------------------------------------------------------
+   phase 2 (all modes): bridge formation and the forces
+------------------------------------------------------------------------- */
+
+void PairGranCapillary::form_bridges_and_forces()
+{
+  const int history_update = update->setupflag ? 0 : 1;
+  double **x = atom->x;
+  double *radius = atom->radius;
+  int *type = atom->type;
+  tagint *tag = atom->tag;
+  double *special = force->special_lj;
+  const int per_atom = liquid_mode == LIQUID_PROTOCOL2 || liquid_mode == LIQUID_PROTOCOL3;
+  const int protocol3 = liquid_mode == LIQUID_PROTOCOL3;
+
+  const int inum = list->inum;
+  int *ilist = list->ilist;
+  int *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+  int **firsttouch = fix_history->firstflag;
+  double **firstvalue = fix_history->firstvalue;
+
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const int itype = type[i];
+    int *jlist = firstneigh[i];
+    int *touch = firsttouch[i];
+    double *allhistory = firstvalue[i];
+    for (int jj = 0; jj < numneigh[i]; jj++) {
+      int j = jlist[jj];
+      const double factor_lj = special[sbmask(j)];
+      j &= NEIGHMASK;
+      if (factor_lj == 0.0) continue;
+      const int jtype = type[j];
+      double *history = &allhistory[SIZE_HISTORY * jj];
+      cb_bridge *bridge = bridge_of(history);
+      const double delx = x[i][0] - x[j][0];
+      const double dely = x[i][1] - x[j][1];
+      const double delz = x[i][2] - x[j][2];
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      const double radsum = radius[i] + radius[j];
+      const double gap = sqrt(rsq) - radsum;
+      const cb_law *pair_law = law(itype, jtype);
+
+      if (per_atom) {
+        if (bridge->active == 0.0) {
+          if (gap <= 0.0 && wet_pair(i, j, itype, jtype)) {
+            double offer_i = offer[i], offer_j = offer[j], available = 0.0;
+            int status = cb_protocol2_take(&offer_i, &offer_j, &available);
+            check_cb(status, "liquid take", itype, jtype, radius[i], radius[j], available, gap);
+            if (available > 0.0) {
+              cb_transition transition;
+              double none = 0.0;
+              status = cb_bridge_update(pair_law, radius[i], radius[j], gap, available, bridge,
+                                        &transition, &none);
+              check_cb(status, "bridge formation", itype, jtype, radius[i], radius[j],
+                       available, gap);
+              if (transition == CB_BRIDGE_FORMED && counted(i, j)) n_formed += 1.0;
+            }
+          }
+        } else if (protocol3) {
+          if (deposit[i] > 0.0 && best_partner[i] == tag[j]) bridge->volume += deposit[i];
+          if (deposit[j] > 0.0 && best_partner[j] == tag[i]) bridge->volume += deposit[j];
+        }
+      } else {
+        double available = 0.0;
+        if (liquid_mode == LIQUID_FIXED && wet_pair(i, j, itype, jtype))
+          available = design_volume(itype, jtype);
+        double vol = 0.0;
+        if (bridge->active != 0.0 && rsq >= cutsq[itype][jtype]) {
+          vol = bridge->volume;
+          bridge->volume = bridge->active = 0.0;
+          if (counted(i, j)) {
+            n_reach += 1.0;
+            n_ruptured += 1.0;
+          }
+        } else {
+          cb_transition transition;
+          const double before = bridge->volume;
+          int status = cb_bridge_update(pair_law, radius[i], radius[j], gap, available, bridge,
+                                        &transition, &vol);
+          check_cb(status, "bridge update", itype, jtype, radius[i], radius[j],
+                   bridge->active != 0.0 ? bridge->volume : MAX(before, available), gap);
+          if (transition == CB_BRIDGE_FORMED && counted(i, j)) n_formed += 1.0;
+          if (transition == CB_BRIDGE_RUPTURED && counted(i, j)) n_ruptured += 1.0;
+          if (transition != CB_BRIDGE_RUPTURED) vol = 0.0;
+        }
+        if (vol > 0.0 && liquid_mode == LIQUID_PROTOCOL1 && counted(i, j)) pool_released += vol;
+      }
+      pair_force(i, j, jj, history, touch, history_update);
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   contact, capillary and tangential forces of one pair; keeps the history flag
+------------------------------------------------------------------------- */
+
+void PairGranCapillary::pair_force(int i, int j, int jj, double *history, int *touch,
+                                   int history_update)
+{
+  double **x = atom->x;
+  double **v = atom->v;
+  double **f = atom->f;
+  double **omega = atom->omega;
+  double **torque = atom->torque;
+  double *radius = atom->radius;
+  double *rmass = atom->rmass;
+  int *mask = atom->mask;
+  int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  const int itype = type[i], jtype = type[j];
+
+  const double delx = x[i][0] - x[j][0];
+  const double dely = x[i][1] - x[j][1];
+  const double delz = x[i][2] - x[j][2];
+  const double rsq = delx * delx + dely * dely + delz * delz;
+  const double r = sqrt(rsq);
+  const double radi = radius[i], radj = radius[j];
+  const double gap = r - (radi + radj);
+  cb_bridge *bridge = bridge_of(history);
+  double *shear = &history[HIST_SHEAR];
+
+  double capillary = 0.0;
+  if (bridge->active != 0.0) {
+    int status = cb_force(law(itype, jtype), radi, radj, bridge->volume, gap, &capillary, nullptr);
+    check_cb(status, "capillary force", itype, jtype, radi, radj, bridge->volume, gap);
+  }
+
+  const int in_contact = contact_on[itype][jtype] && gap < 0.0;
+  touch[jj] = (in_contact || bridge->active != 0.0) ? 1 : 0;
+  if (!in_contact) {
+    shear[0] = shear[1] = shear[2] = 0.0;
+    if (bridge->active == 0.0) bridge->volume = 0.0;
+    if (capillary == 0.0) return;
+  }
+
+  const double rinv = 1.0 / r;
+  double contact = 0.0;
+  double fs1 = 0.0, fs2 = 0.0, fs3 = 0.0;
+  if (in_contact) {
+    const double vr1 = v[i][0] - v[j][0];
+    const double vr2 = v[i][1] - v[j][1];
+    const double vr3 = v[i][2] - v[j][2];
+    const double vnnr = vr1 * delx + vr2 * dely + vr3 * delz;
+    const double gap_rate = vnnr * rinv;
+
+    double mi = rmass[i], mj = rmass[j];
+    double meff = mi * mj / (mi + mj);
+    if (mask[i] & freeze_group_bit) meff = mj;
+    if (mask[j] & freeze_group_bit) meff = mi;
+
+    // Richefeu 2007 eqs. 2, 3
+    contact = kn[itype][jtype] * (-gap);
+    if (gap_rate < 0.0) {
+      const double eta = 2.0 * damping[itype][jtype] * sqrt(meff * kn[itype][jtype]);
+      contact += eta * (-gap_rate);
+    }
+
+    // relative tangential velocity at the contact point
+    const double rsqinv = 1.0 / rsq;
+    const double vt1 = vr1 - delx * vnnr * rsqinv;
+    const double vt2 = vr2 - dely * vnnr * rsqinv;
+    const double vt3 = vr3 - delz * vnnr * rsqinv;
+    const double wr1 = (radi * omega[i][0] + radj * omega[j][0]) * rinv;
+    const double wr2 = (radi * omega[i][1] + radj * omega[j][1]) * rinv;
+    const double wr3 = (radi * omega[i][2] + radj * omega[j][2]) * rinv;
+    const double vtr1 = vt1 - (delz * wr2 - dely * wr3);
+    const double vtr2 = vt2 - (delx * wr3 - delz * wr1);
+    const double vtr3 = vt3 - (dely * wr1 - delx * wr2);
+
+    if (history_update) {
+      shear[0] += vtr1 * dt;
+      shear[1] += vtr2 * dt;
+      shear[2] += vtr3 * dt;
+      // keep the displacement in the current tangent plane
+      const double normal_part = (shear[0] * delx + shear[1] * dely + shear[2] * delz) * rsqinv;
+      shear[0] -= normal_part * delx;
+      shear[1] -= normal_part * dely;
+      shear[2] -= normal_part * delz;
+    }
+    const double k_t = kt[itype][jtype];
+    fs1 = -k_t * shear[0];
+    fs2 = -k_t * shear[1];
+    fs3 = -k_t * shear[2];
+    const double fs = sqrt(fs1 * fs1 + fs2 * fs2 + fs3 * fs3);
+    const double limit = mu[itype][jtype] * (contact + (friction_wet ? capillary : 0.0));
+    if (fs > limit) {
+      const double scale = fs > 0.0 ? limit / fs : 0.0;
+      if (history_update) {
+        shear[0] *= scale;
+        shear[1] *= scale;
+        shear[2] *= scale;
+      }
+      fs1 *= scale;
+      fs2 *= scale;
+      fs3 *= scale;
+    }
+  }
+
+  const double ccel = (contact - capillary) * rinv;
+  const double fx = delx * ccel + fs1;
+  const double fy = dely * ccel + fs2;
+  const double fz = delz * ccel + fs3;
+  f[i][0] += fx;
+  f[i][1] += fy;
+  f[i][2] += fz;
+  const double tor1 = rinv * (dely * fs3 - delz * fs2);
+  const double tor2 = rinv * (delz * fs1 - delx * fs3);
+  const double tor3 = rinv * (delx * fs2 - dely * fs1);
+  torque[i][0] -= radi * tor1;
+  torque[i][1] -= radi * tor2;
+  torque[i][2] -= radi * tor3;
+  if (newton_pair || j < nlocal) {
+    f[j][0] -= fx;
+    f[j][1] -= fy;
+    f[j][2] -= fz;
+    torque[j][0] -= radj * tor1;
+    torque[j][1] -= radj * tor2;
+    torque[j][2] -= radj * tor3;
+  }
+  if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+}
+
+/* ----------------------------------------------------------------------
+   time-step check, at setup and after every re-neighboring, warns once:
+   dt > 0.1 pi sqrt(m_min / k), k the larger of k_n and the capillary stiffness bound
+   (cb_capillary_stiffness_bound over the radius ranges and the bridge volumes in use)
+------------------------------------------------------------------------- */
+
+void PairGranCapillary::check_timestep()
+{
+  if (dt_warned) return;
+  const int n = atom->ntypes;
+  const int np = (n + 1) * (n + 1);
+  std::vector<double> mass_lo(n + 1, HUGE_VAL), mass(n + 1);
+  for (int i = 0; i < atom->nlocal; i++)
+    mass_lo[atom->type[i]] = MIN(mass_lo[atom->type[i]], atom->rmass[i]);
+  MPI_Allreduce(&mass_lo[1], &mass[1], n, MPI_DOUBLE, MPI_MIN, world);
+
+  // bridge volumes in use per type pair: fixed, or the range of the active bridges
+  std::vector<double> vlo(np, HUGE_VAL), vhi(np, 0.0), vlo_all(np), vhi_all(np);
+  if (liquid_mode != LIQUID_FIXED && fix_history && list) {
+    int *type = atom->type;
+    for (int ii = 0; ii < list->inum; ii++) {
+      const int i = list->ilist[ii];
+      double *allhistory = fix_history->firstvalue[i];
+      for (int jj = 0; jj < list->numneigh[i]; jj++) {
+        const int j = list->firstneigh[i][jj] & NEIGHMASK;
+        cb_bridge *bridge = bridge_of(&allhistory[SIZE_HISTORY * jj]);
+        if (bridge->active == 0.0) continue;
+        const int a = MIN(type[i], type[j]), b = MAX(type[i], type[j]);
+        vlo[a * (n + 1) + b] = MIN(vlo[a * (n + 1) + b], bridge->volume);
+        vhi[a * (n + 1) + b] = MAX(vhi[a * (n + 1) + b], bridge->volume);
+      }
+    }
+  }
+  MPI_Allreduce(vlo.data(), vlo_all.data(), np, MPI_DOUBLE, MPI_MIN, world);
+  MPI_Allreduce(vhi.data(), vhi_all.data(), np, MPI_DOUBLE, MPI_MAX, world);
+
+  for (int i = 1; i <= n; i++)
+    for (int j = i; j <= n; j++) {
+      if (!setflag[i][j] || mass[i] == HUGE_VAL || mass[j] == HUGE_VAL) continue;
+      const double m = MIN(mass[i], mass[j]);
+      double volumes[2] = {0.0, 0.0};
+      if (liquid_mode == LIQUID_FIXED)
+        volumes[0] = design_volume(i, j);
+      else if (vhi_all[i * (n + 1) + j] > 0.0) {
+        volumes[0] = vlo_all[i * (n + 1) + j];
+        volumes[1] = vhi_all[i * (n + 1) + j];
+      }
+      double capillary = 0.0;
+      const double ri[2] = {rad_min[i], rad_max[i]}, rj[2] = {rad_min[j], rad_max[j]};
+      for (double vol : volumes) {
+        if (!(vol > 0.0)) continue;
+        for (double r1 : ri)
+          for (double r2 : rj) {
+            double k = 0.0;
+            if (r1 > 0.0 && r2 > 0.0 &&
+                cb_capillary_stiffness_bound(law(i, j), r1, r2, vol, &k) == CB_OK)
+              capillary = MAX(capillary, k);
+          }
+      }
+      const double contact = contact_on[i][j] ? kn[i][j] : 0.0;
+      const double k = MAX(contact, capillary);
+      if (!(k > 0.0)) continue;
+      const double limit = 0.1 * MY_PI * sqrt(m / k);
+      if (update->dt > limit) {
+        dt_warned = 1;
+        if (comm->me == 0)
+          error->warning(FLERR, "pair gran/capillary: time step {:.6g} s exceeds 10% of "
+                         "pi sqrt(m/k) = {:.6g} s for types {} {} (smallest mass m = {:.6g} kg, "
+                         "k = {:.6g} N/m: the larger of k_n = {:.6g} N/m and the capillary "
+                         "stiffness bound {:.6g} N/m); this warning is given once",
+                         update->dt, 10.0 * limit, i, j, m, k, contact, capillary);
+        return;
+      }
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+
+int PairGranCapillary::pack_reverse_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int a = first; a < first + n; a++) {
+    buf[m++] = candidates[a];
+    buf[m++] = released[a];
+    buf[m++] = best_height[a];
+    buf[m++] = ubuf(best_partner[a]).d;
+  }
+  return m;
+}
+
+void PairGranCapillary::unpack_reverse_comm(int n, int *list_, double *buf)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    const int a = list_[k];
+    candidates[a] += buf[m++];
+    released[a] += buf[m++];
+    const double height = buf[m++];
+    const auto partner = (tagint) ubuf(buf[m++]).i;
+    if (partner && better_receiver(height, partner, best_height[a], best_partner[a])) {
+      best_height[a] = height;
+      best_partner[a] = partner;
+    }
+  }
+}
+
+int PairGranCapillary::pack_forward_comm(int n, int *list_, double *buf, int /*pbc_flag*/,
+                                         int * /*pbc*/)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    const int a = list_[k];
+    buf[m++] = offer[a];
+    buf[m++] = deposit[a];
+    buf[m++] = ubuf(best_partner[a]).d;
+  }
+  return m;
+}
+
+void PairGranCapillary::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int a = first; a < first + n; a++) {
+    offer[a] = buf[m++];
+    deposit[a] = buf[m++];
+    best_partner[a] = (tagint) ubuf(buf[m++]).i;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the history of pair (i, j): in i's list, or in j's list (shear negated)
+------------------------------------------------------------------------- */
+
+double *PairGranCapillary::find_history(int i, int j, double *negate)
+{
+  *negate = 1.0;
+  if (!fix_history || !list) return nullptr;
+  int jnum = list->numneigh[i];
+  int *jlist = list->firstneigh[i];
+  for (int k = 0; k < jnum; k++) {
+    neighprev++;
+    if (neighprev >= jnum) neighprev = 0;
+    if ((jlist[neighprev] & NEIGHMASK) == j) return &fix_history->firstvalue[i][SIZE_HISTORY * neighprev];
+  }
+  if (j < atom->nlocal) {
+    jnum = list->numneigh[j];
+    jlist = list->firstneigh[j];
+    for (int k = 0; k < jnum; k++)
+      if ((jlist[k] & NEIGHMASK) == i) {
+        *negate = -1.0;
+        return &fix_history->firstvalue[j][SIZE_HISTORY * k];
+      }
+  }
+  return nullptr;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double PairGranCapillary::single(int i, int j, int itype, int jtype, double rsq,
+                                 double /*factor_coul*/, double /*factor_lj*/, double &fforce)
+{
+  double *radius = atom->radius;
+  const double radi = radius[i], radj = radius[j];
+  const double r = sqrt(rsq);
+  const double gap = r - (radi + radj);
+  double negate = 1.0;
+  double *history = find_history(i, j, &negate);
+
+  double vol = 0.0, active = 0.0, capillary = 0.0;
+  if (history) {
+    cb_bridge *bridge = bridge_of(history);
+    active = bridge->active;
+    vol = bridge->volume;
+  }
+  if (active != 0.0) {
+    int status = cb_force(law(itype, jtype), radi, radj, vol, gap, &capillary, nullptr);
+    check_cb(status, "capillary force (single)", itype, jtype, radi, radj, vol, gap);
+  }
+
+  double contact = 0.0, tangential = 0.0;
+  if (contact_on[itype][jtype] && gap < 0.0) {
+    double **x = atom->x, **v = atom->v;
+    const double delx = x[i][0] - x[j][0];
+    const double dely = x[i][1] - x[j][1];
+    const double delz = x[i][2] - x[j][2];
+    const double vnnr =
+        (v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely + (v[i][2] - v[j][2]) * delz;
+    const double gap_rate = vnnr / r;
+    double mi = atom->rmass[i], mj = atom->rmass[j];
+    double meff = mi * mj / (mi + mj);
+    if (atom->mask[i] & freeze_group_bit) meff = mj;
+    if (atom->mask[j] & freeze_group_bit) meff = mi;
+    contact = kn[itype][jtype] * (-gap);
+    if (gap_rate < 0.0)
+      contact += 2.0 * damping[itype][jtype] * sqrt(meff * kn[itype][jtype]) * (-gap_rate);
+    if (history) {
+      const double *shear = &history[HIST_SHEAR];
+      tangential = kt[itype][jtype] *
+          sqrt(shear[0] * shear[0] + shear[1] * shear[1] + shear[2] * shear[2]);
+      const double limit = mu[itype][jtype] * (contact + (friction_wet ? capillary : 0.0));
+      tangential = MIN(tangential, limit);
+    }
+  }
+  (void) negate;
+
+  fforce = (contact - capillary) / r;
+  svector[SV_CAPILLARY_FORCE] = capillary;
+  svector[SV_GAP] = gap;
+  svector[SV_VOLUME] = active != 0.0 ? vol : 0.0;
+  svector[SV_BRIDGE] = active != 0.0 ? 1.0 : 0.0;
+  svector[SV_R1] = radi;
+  svector[SV_R2] = radj;
+  svector[SV_CONTACT_FORCE] = contact;
+  svector[SV_TANGENTIAL_FORCE] = tangential;
+  return 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   census for fix capillary/liquid (this rank; see the header)
+------------------------------------------------------------------------- */
+
+void PairGranCapillary::census(double *out)
+{
+  double bridges = 0.0, liquid = 0.0;
+  if (fix_history && list && fix_history->firstvalue) {
+    for (int ii = 0; ii < list->inum; ii++) {
+      const int i = list->ilist[ii];
+      double *allhistory = fix_history->firstvalue[i];
+      for (int jj = 0; jj < list->numneigh[i]; jj++) {
+        const int j = list->firstneigh[i][jj] & NEIGHMASK;
+        cb_bridge *bridge = bridge_of(&allhistory[SIZE_HISTORY * jj]);
+        if (bridge->active == 0.0 || !counted(i, j)) continue;
+        bridges += 1.0;
+        liquid += bridge->volume;
+      }
+    }
+  }
+  out[0] = bridges;
+  out[1] = liquid;
+  out[2] = n_formed;
+  out[3] = n_ruptured;
+  out[4] = n_reach;
+  out[5] = pool_released;
+  n_formed = n_ruptured = n_reach = pool_released = 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   Protocol 1 (Richefeu 2007 §2.4, eqs. 13-14) over every pair within reach.
+   MPI: the candidate pairs (r1, r2, gap, the two tags) of all ranks are gathered on
+   rank 0 (MPI_Gatherv), sorted by their tags and made unique (with newton off a pair
+   with a ghost partner is sent by both owners), handed to cb_protocol1_distribute in
+   that order — so the result does not depend on the number of ranks — and the volumes
+   are scattered back (MPI_Scatterv); each rank writes them into its pair histories.
+------------------------------------------------------------------------- */
+
+int PairGranCapillary::protocol1(double total_liquid, double &alpha, double &largest_volume)
+{
+  double **x = atom->x;
+  double *radius = atom->radius;
+  int *type = atom->type;
+  tagint *tag = atom->tag;
+
+  std::vector<double> geometry;    // r1, r2, gap per candidate
+  std::vector<tagint> keys;        // smaller tag, larger tag
+  std::vector<std::pair<int, int>> where;
+  const cb_law *the_law = nullptr;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = list->firstneigh[i][jj] & NEIGHMASK;
+      const int itype = type[i], jtype = type[j];
+      if (!wet_pair(i, j, itype, jtype)) continue;
+      const double delx = x[i][0] - x[j][0];
+      const double dely = x[i][1] - x[j][1];
+      const double delz = x[i][2] - x[j][2];
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      if (rsq >= cutsq[itype][jtype]) continue;
+      the_law = law(itype, jtype);
+      geometry.push_back(radius[i]);
+      geometry.push_back(radius[j]);
+      geometry.push_back(sqrt(rsq) - (radius[i] + radius[j]));
+      keys.push_back(MIN(tag[i], tag[j]));
+      keys.push_back(MAX(tag[i], tag[j]));
+      where.emplace_back(i, jj);
+    }
+  }
+  // the law of the wet type pairs (one law: checked in init_style)
+  if (!the_law) {
+    for (int i = 1; i <= atom->ntypes && !the_law; i++)
+      for (int j = i; j <= atom->ntypes && !the_law; j++)
+        if (setflag[i][j] && volume[i][j] != 0.0) the_law = law(i, j);
+  }
+  if (!the_law)
+    error->all(FLERR, "fix capillary/liquid {}: every type pair is dry (pair_coeff volume 0): no "
+               "pair can hold the liquid", fix_liquid->mode_name());
+
+  const int nprocs = comm->nprocs, me = comm->me;
+  int nmine = (int) where.size();
+  std::vector<int> counts(nprocs), displs(nprocs), counts3(nprocs), displs3(nprocs),
+      counts2(nprocs), displs2(nprocs);
+  MPI_Gather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
+  bigint ntotal = 0;
+  if (me == 0) {
+    for (int p = 0; p < nprocs; p++) {
+      displs[p] = (int) ntotal;
+      ntotal += counts[p];
+      counts3[p] = 3 * counts[p];
+      displs3[p] = 3 * displs[p];
+      counts2[p] = 2 * counts[p];
+      displs2[p] = 2 * displs[p];
+    }
+    if (3 * ntotal > MAXSMALLINT)
+      error->one(FLERR, "fix capillary/liquid: too many pairs for Protocol 1 on one rank");
+  }
+  std::vector<double> all_geometry(me == 0 ? 3 * ntotal : 0);
+  std::vector<tagint> all_keys(me == 0 ? 2 * ntotal : 0);
+  std::vector<double> all_volumes(me == 0 ? ntotal : 0);
+  MPI_Gatherv(geometry.data(), 3 * nmine, MPI_DOUBLE, all_geometry.data(), counts3.data(),
+              displs3.data(), MPI_DOUBLE, 0, world);
+  MPI_Gatherv(keys.data(), 2 * nmine, MPI_LMP_TAGINT, all_keys.data(), counts2.data(),
+              displs2.data(), MPI_LMP_TAGINT, 0, world);
+
+  int status = CB_OK;
+  double result[2] = {0.0, 0.0};
+  if (me == 0) {
+    std::vector<bigint> order(ntotal);
+    for (bigint k = 0; k < ntotal; k++) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](bigint a, bigint b) {
+      if (all_keys[2 * a] != all_keys[2 * b]) return all_keys[2 * a] < all_keys[2 * b];
+      if (all_keys[2 * a + 1] != all_keys[2 * b + 1])
+        return all_keys[2 * a + 1] < all_keys[2 * b + 1];
+      return a < b;
+    });
+    std::vector<double> r1, r2, gap;
+    std::vector<bigint> unique_of(ntotal);
+    for (bigint k = 0; k < ntotal; k++) {
+      const bigint e = order[k];
+      const bool same = k > 0 && all_keys[2 * e] == all_keys[2 * order[k - 1]] &&
+          all_keys[2 * e + 1] == all_keys[2 * order[k - 1] + 1];
+      if (!same) {
+        r1.push_back(all_geometry[3 * e]);
+        r2.push_back(all_geometry[3 * e + 1]);
+        gap.push_back(all_geometry[3 * e + 2]);
+      }
+      unique_of[e] = (bigint) r1.size() - 1;
+    }
+    const size_t nu = r1.size();
+    std::vector<double> threshold(nu), weight(nu), vol(nu);
+    std::vector<size_t> sorted(nu);
+    cb_protocol1_work work = {threshold.data(), weight.data(), sorted.data()};
+    status = cb_protocol1_distribute(the_law, nu, r1.data(), r2.data(), gap.data(), total_liquid,
+                                     work, vol.data(), &result[0]);
+    if (status == CB_OK) {
+      for (bigint e = 0; e < ntotal; e++) all_volumes[e] = vol[unique_of[e]];
+      for (size_t k = 0; k < nu; k++) result[1] = MAX(result[1], vol[k]);
+    }
+  }
+  MPI_Bcast(&status, 1, MPI_INT, 0, world);
+  MPI_Bcast(result, 2, MPI_DOUBLE, 0, world);
+  if (status == CB_ERR_LIQUID) return 1;
+  if (status != CB_OK)
+    error->all(FLERR, "fix capillary/liquid: Protocol 1 (cb_protocol1_distribute) failed: {}",
+               cb_status_message((cb_status) status));
+
+  std::vector<double> mine(nmine);
+  MPI_Scatterv(all_volumes.data(), counts.data(), displs.data(), MPI_DOUBLE, mine.data(), nmine,
+               MPI_DOUBLE, 0, world);
+
+  alpha = result[0];
+  largest_volume = result[1];
+
+  // the bridges between the largest spheres of a wet type pair must stay within the
+  // volume the neighbor reach was built for, or pairs beyond the reach would be eligible
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (!setflag[i][j] || volume[i][j] == 0.0 || rad_max[i] <= 0.0 || rad_max[j] <= 0.0)
+        continue;
+      const double rg = sqrt(rad_max[i] * rad_max[j]);
+      const double largest = alpha * rg * rg * rg;
+      const double design = design_volume(i, j);
+      if (largest > design * (1.0 + 1e-12))
+        error->all(FLERR, "fix capillary/liquid: Protocol 1 gives alpha = {:.6g}: a bridge between "
+                   "the largest spheres of types {} {} would hold {:.6g} m^3, more than vmax = "
+                   "{:.6g} m^3 that the neighbor reach was built for; raise vmax",
+                   alpha, i, j, largest, design);
+    }
+
+  int **firsttouch = fix_history->firstflag;
+  double **firstvalue = fix_history->firstvalue;
+  for (int k = 0; k < nmine; k++) {
+    const int i = where[k].first, jj = where[k].second;
+    const int j = list->firstneigh[i][jj] & NEIGHMASK;
+    double *history = &firstvalue[i][SIZE_HISTORY * jj];
+    cb_bridge *bridge = bridge_of(history);
+    const int was = bridge->active != 0.0;
+    const double gap = geometry[3 * k + 2];
+    if (mine[k] > 0.0) {
+      bridge->volume = mine[k];
+      bridge->active = 1.0;
+    } else {
+      bridge->volume = bridge->active = 0.0;
+    }
+    const int now = bridge->active != 0.0;
+    const int in_contact = contact_on[type[i]][type[j]] && gap < 0.0;
+    firsttouch[i][jj] = (now || in_contact) ? 1 : 0;
+    if (!in_contact) history[HIST_SHEAR] = history[HIST_SHEAR + 1] = history[HIST_SHEAR + 2] = 0.0;
+    if (counted(i, j)) {
+      if (now && !was) n_formed += 1.0;
+      if (was && !now) n_ruptured += 1.0;
+    }
+  }
+  pool_released = 0.0;
+  return 0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairGranCapillary::reset_dt()
+{
+  dt = update->dt;
+}
+
+/* ----------------------------------------------------------------------
+   restart: the settings and, per type pair, the pair_coeff arguments (re-parsed)
+------------------------------------------------------------------------- */
+
+void PairGranCapillary::write_restart(FILE *fp)
+{
+  write_restart_settings(fp);
+  const int n = atom->ntypes;
+  for (int i = 1; i <= n; i++)
+    for (int j = i; j <= n; j++) {
+      fwrite(&setflag[i][j], sizeof(int), 1, fp);
+      if (setflag[i][j]) {
+        const std::string &text = coeff_text[(size_t) i * (n + 1) + j];
+        int length = (int) text.size();
+        fwrite(&length, sizeof(int), 1, fp);
+        fwrite(text.data(), sizeof(char), length, fp);
+      }
+    }
+}
+
+void PairGranCapillary::read_restart(FILE *fp)
+{
+  read_restart_settings(fp);
+  allocate();
+  const int n = atom->ntypes;
+  const int me = comm->me;
+  for (int i = 1; i <= n; i++)
+    for (int j = i; j <= n; j++) {
+      int flag = 0;
+      if (me == 0) utils::sfread(FLERR, &flag, sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&flag, 1, MPI_INT, 0, world);
+      if (!flag) continue;
+      int length = 0;
+      if (me == 0) utils::sfread(FLERR, &length, sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&length, 1, MPI_INT, 0, world);
+      std::string text(length, ' ');
+      if (me == 0 && length > 0) utils::sfread(FLERR, &text[0], sizeof(char), length, fp, nullptr, error);
+      if (length > 0) MPI_Bcast(&text[0], length, MPI_CHAR, 0, world);
+      auto words = utils::split_words(text);
+      std::vector<char *> args;
+      for (auto &w : words) args.push_back(&w[0]);
+      parse_coeff(i, i, j, j, (int) args.size(), args.data());
+    }
+}
+
+void PairGranCapillary::write_restart_settings(FILE *fp)
+{
+  fwrite(&friction_wet, sizeof(int), 1, fp);
+}
+
+void PairGranCapillary::read_restart_settings(FILE *fp)
+{
+  if (comm->me == 0) utils::sfread(FLERR, &friction_wet, sizeof(int), 1, fp, nullptr, error);
+  MPI_Bcast(&friction_wet, 1, MPI_INT, 0, world);
+}
+
+/* ---------------------------------------------------------------------- */
+
+double PairGranCapillary::memory_usage()
+{
+  return (double) nmax_scratch * (5 * sizeof(double) + sizeof(tagint));
+}

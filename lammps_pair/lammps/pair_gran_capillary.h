@@ -1,0 +1,148 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   capbridge — LAMMPS binding: pair style gran/capillary
+
+   Linear spring-dashpot contact (Richefeu et al. 2007, eqs. 2-3), tangential spring
+   with history and a Coulomb limit (eq. 12), and the capillary (liquid-bridge) force of
+   the capbridge core (capbridge.h) between finite-size spheres.  The bridge state of
+   every pair lives in the pair history (fix NEIGH_HISTORY).  See
+   doc/pair_gran_capillary.rst.
+------------------------------------------------------------------------- */
+
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(gran/capillary,PairGranCapillary);
+// clang-format on
+#else
+
+#ifndef LMP_PAIR_GRAN_CAPILLARY_H
+#define LMP_PAIR_GRAN_CAPILLARY_H
+
+#include "pair.h"
+
+#include "capbridge.h"
+
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class FixCapillaryLiquid;
+
+class PairGranCapillary : public Pair {
+ public:
+  // Layout of the pair history (doubles per neighbor pair):
+  //   [0..2] tangential (shear) displacement, negated for the partner;
+  //   [3]    bridge volume [m^3], [4] bridge active (1.0 / 0.0): a cb_bridge, copied.
+  enum { HIST_SHEAR = 0, HIST_BRIDGE = 3, SIZE_HISTORY = 3 + CB_BRIDGE_DOUBLES };
+  // How bridges get their liquid.
+  enum { LIQUID_FIXED = 0, LIQUID_PROTOCOL1, LIQUID_PROTOCOL2, LIQUID_PROTOCOL3 };
+  // Values of single() in svector (compute pair/local p1 ... p8).
+  enum {
+    SV_CAPILLARY_FORCE = 0,
+    SV_GAP,
+    SV_VOLUME,
+    SV_BRIDGE,
+    SV_R1,
+    SV_R2,
+    SV_CONTACT_FORCE,
+    SV_TANGENTIAL_FORCE,
+    SV_COUNT
+  };
+
+  PairGranCapillary(class LAMMPS *);
+  ~PairGranCapillary() override;
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
+  void reset_dt() override;
+  double single(int, int, int, int, double, double, double, double &) override;
+  void transfer_history(double *, double *, int, int) override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
+  double memory_usage() override;
+  double atom2cut(int) override;
+  double radii2cut(double, double) override;
+
+  // ---- interface used by fix capillary/liquid ----
+
+  // Local (this rank's) census of the pair history; each pair counted once over all
+  // ranks.  out[0] bridges, out[1] liquid in bridges, out[2] formations, out[3] ruptures,
+  // out[4] ruptures forced at the neighbor reach, out[5] liquid released to the global
+  // pool (Protocol 1).  Event counters and the released liquid are reset.
+  void census(double *out);
+  // Protocol 1 (Richefeu 2007 §2.4) over every pair within reach, across all ranks.
+  // Returns 0 on success (alpha and the largest bridge volume set), 1 when no pair can
+  // hold the liquid (nothing changed).
+  int protocol1(double total_liquid, double &alpha, double &largest_volume);
+  // The neighbor reach of a type pair is built for this bridge volume.
+  double design_volume(int itype, int jtype) const;
+  // Protocol 1: liquid of broken bridges this rank released since the last call.
+  double drain_pool()
+  {
+    double v = pool_released;
+    pool_released = 0.0;
+    return v;
+  }
+
+ protected:
+  // per type pair
+  double **kn, **kt, **damping, **mu, **volume, **cut_pair;
+  int **contact_on, **law_of;
+  std::vector<std::string> coeff_text;    // the pair_coeff arguments, for restart files
+  std::vector<cb_law *> laws;             // prepared laws, shared by type pairs
+  std::vector<std::string> law_text;      // the law specification of each law
+
+  int friction_wet;    // 1: Coulomb limit mu (f_contact + f_capillary); 0: mu f_contact
+  double dt;
+  int freeze_group_bit;
+
+  // radius range per type (atoms present, fix pour/deposit)
+  double *rad_min, *rad_max;
+
+  class FixDummy *fix_dummy;
+  class FixNeighHistory *fix_history;
+  FixCapillaryLiquid *fix_liquid;
+  int liquid_mode, liquid_groupbit;
+
+  // per-atom scratch of one force evaluation (owned + ghost), Protocols 2 and 3
+  int nmax_scratch;
+  double *candidates, *released, *offer, *deposit, *best_height;
+  tagint *best_partner;
+  int commflag;
+
+  // events since the last census (this rank, pairs counted once)
+  double n_formed, n_ruptured, n_reach, pool_released;
+
+  int dt_warned, reach_warned;
+  int neighprev;
+
+  void allocate();
+  void grow_scratch();
+  const cb_law *law(int itype, int jtype) const { return laws[law_of[itype][jtype]]; }
+  int counted(int i, int j) const;
+  int wet_pair(int i, int j, int itype, int jtype) const;
+  void check_cb(int status, const char *what, int itype, int jtype, double r1, double r2,
+                double vol, double gap);
+  void update_bridges();
+  void form_bridges_and_forces();
+  void pair_force(int i, int j, int jj, double *history, int *touch, int history_update);
+  void exchange_liquid();
+  void check_timestep();
+  void radius_ranges();
+  double max_rupture(int itype, int jtype, double vol) const;
+  double *find_history(int i, int j, double *negate);
+  void parse_coeff(int ilo, int ihi, int jlo, int jhi, int narg, char **arg);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
