@@ -1,0 +1,45 @@
+#!/bin/sh
+# Contact details of pair gran/capillary with two spheres:
+#  - friction: a sliding contact carries the Coulomb limit mu (f_contact + f_capillary)
+#    with 'friction wet' (Richefeu 2007 eq. 12 as documented), mu f_contact with
+#    'friction dry'; before it slides, k_t times the accumulated displacement;
+#  - the neighbor reach: LAMMPS's neighbor cutoff is r1 + r2 + the rupture distance of
+#    the bridge volume in use (fixed: the pair_coeff volume; a protocol: vmax) + skin.
+. "$(dirname "$0")/lib.sh" "$@"
+
+# richefeu, R = 1 mm, gamma 0.0728, theta 0: f_capillary at contact = 2 pi gamma R
+FCAP=$(awk 'BEGIN { printf "%.17g", 2 * atan2(0, -1) * 0.0728 * 1e-3 }')
+for friction in wet dry; do
+    log="$TMP/friction_$friction.log"
+    lmp 1 "$log" -in "$DECKS/in.contact" -var friction $friction -var overlap 1e-6 -var vy 0.01 \
+        -var nsteps 1000 -var vkw "volume 1e-11" >/dev/null 2>&1 ||
+        { fail "friction $friction: LAMMPS failed: $(grep -h -m1 ERROR "$log"*)"; continue; }
+    thermo "$log" >"$TMP/rows"
+    # step 100: sticking, f_t = k_t |v| t = 100 * 0.01 * 100e-6; step 1000: sliding
+    close_rel "friction $friction: capillary force" "$(awk '$1 == 1000 { print $2 }' "$TMP/rows")" "$FCAP" 1e-12
+    close_rel "friction $friction: contact force k_n overlap" "$(awk '$1 == 1000 { print $3 }' "$TMP/rows")" 1e-3 1e-6
+    close_rel "friction $friction: sticking at step 100" "$(awk '$1 == 100 { print $4 }' "$TMP/rows")" 1e-4 1e-6
+    limit=$(awk -v f=$friction '$1 == 1000 { printf "%.17g", 0.5 * ($3 + (f == "wet" ? $2 : 0)) }' "$TMP/rows")
+    close_rel "friction $friction: sliding at mu (contact$( [ $friction = wet ] && echo ' + capillary'))" \
+        "$(awk '$1 == 1000 { print $4 }' "$TMP/rows")" "$limit" 1e-12
+    echo "friction $friction: tangential force at step 1000 $(awk '$1 == 1000 { print $4 }' "$TMP/rows") N, limit $limit N"
+done
+
+# the neighbor reach
+reach() {
+    label=$1 expected=$2
+    shift 2
+    log="$TMP/reach_$label.log"
+    lmp 1 "$log" -in "$DECKS/in.contact" -var friction wet -var overlap 0 -var vy 0 -var nsteps 0 "$@" \
+        >/dev/null 2>&1 || { fail "reach $label: LAMMPS failed: $(grep -h -m1 ERROR "$log"*)"; return; }
+    got=$(sed -n 's/.*master list distance cutoff = //p' "$log" | head -1)
+    close_rel "reach $label: neighbor cutoff" "$got" "$expected" 1e-7
+    echo "reach $label: neighbor cutoff $got m, r1 + r2 + rupture distance + skin = $expected m"
+}
+# richefeu: rupture distance (1 + theta/2) V^(1/3) (Lian, Richefeu 2007 eq. 6); skin 1e-4
+reach fixed "$(awk 'BEGIN { printf "%.17g", 2e-3 + exp(log(1e-11) / 3) + 1e-4 }')" -var vkw "volume 1e-11"
+reach protocol2 "$(awk 'BEGIN { printf "%.17g", 2e-3 + exp(log(3e-11) / 3) + 1e-4 }')" \
+    -var vkw " " -var fixmode protocol2 -var fixargs "liquid 1e-11 vmax 3e-11"
+reach dry "$(awk 'BEGIN { printf "%.17g", 2e-3 + 1e-4 }')" -var vkw "volume 0"
+
+finish

@@ -1,0 +1,68 @@
+#!/bin/sh
+# Bad input, one test each: LAMMPS stops with an error whose message names the problem;
+# and the time-step check warns once, with the numbers.
+. "$(dirname "$0")/lib.sh" "$@"
+
+GOOD="100 40 0.3 0.4 law richefeu gamma 0.0728 volume 1e-12"
+# expect NAME PATTERN PAIR_STYLE PAIR_COEFF [FIXMODE [FIXARGS]]: LAMMPS fails, its ERROR line
+# matches PATTERN (an extended regular expression)
+expect() {
+    name=$1 pattern=$2
+    checks=$((checks + 1))
+    lmp 1 "$TMP/$name.log" -in "$DECKS/in.errors" -var pstyle "$3" -var pcoeff "$4" \
+        -var fixmode "${5:-none}" -var fixargs "${6:- }" >/dev/null 2>&1
+    code=$?
+    line=$(grep -h -m1 'ERROR' "$TMP/$name.log" "$TMP/$name.log.screen" 2>/dev/null | head -1)
+    if [ "$code" -eq 0 ]; then
+        fail "$name: LAMMPS succeeded; expected an error matching '$pattern'"
+    elif ! printf '%s\n' "$line" | grep -Eq "$pattern"; then
+        fail "$name: exit $code, error '$line' does not match '$pattern'"
+    else
+        echo "$name: $line"
+    fi
+}
+
+expect unknown_keyword "unknown keyword 'foo': allowed gamma, theta, rupture, overlap, validity, c" \
+    gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728 foo 1"
+expect unknown_law "unknown law 'richefoo': allowed richefeu, willett" \
+    gran/capillary "100 40 0.3 0.4 law richefoo gamma 0.0728 volume 1e-12"
+expect unknown_style_keyword "pair_style gran/capillary: unknown keyword 'frictoin'" \
+    "gran/capillary frictoin wet" "$GOOD"
+expect missing_coefficient "missing coefficient mu \(friction coefficient\) before 'law'" \
+    gran/capillary "100 40 0.3 law richefeu gamma 0.0728 volume 1e-12"
+expect missing_gamma "law richefeu needs 'gamma' \(the surface tension, N/m\)" \
+    gran/capillary "100 40 0.3 0.4 law richefeu volume 1e-12"
+expect missing_volume "pair_coeff 1 1: no bridge volume: give 'volume V'" \
+    gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728"
+expect negative_volume "volume = -1e-12: the bridge volume must be >= 0" \
+    gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728 volume -1e-12"
+expect negative_gamma "surface tension gamma = -0.0728: must be > 0" \
+    gran/capillary "100 40 0.3 0.4 law willett gamma -0.0728 volume 1e-12"
+expect theta_90 "contact angle theta = 90 degrees: allowed 0 <= theta < 90 degrees" \
+    gran/capillary "100 40 0.3 0.4 law rabinovich gamma 0.0728 theta 90 volume 1e-12"
+expect damping_range "damping = 1.5: the damping rate alpha_n must lie in \[0, 1\]" \
+    gran/capillary "100 40 1.5 0.4 law richefeu gamma 0.0728 volume 1e-12"
+expect fix_without_pair "fix capillary/liquid requires pair style gran/capillary" \
+    "gran/hooke/history 100 NULL 0 NULL 0.4 0" "" protocol2 "water 0.01 1000"
+expect fix_unknown_keyword "fix capillary/liquid: unknown keyword 'wather'" \
+    gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728" protocol2 "wather 0.01 1000"
+expect fix_unknown_mode "fix capillary/liquid: unknown mode 'protocol4'" \
+    gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728" protocol4 "water 0.01 1000"
+expect fix_no_liquid "fix capillary/liquid protocol1: give the liquid once" \
+    gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728" protocol1 "every 10"
+expect fix_volume_conflict "volume 1e-12 conflicts with fix capillary/liquid protocol2" \
+    gran/capillary "$GOOD" protocol2 "water 0.01 1000"
+
+# the time-step check: dt = 1e-3 s is far above 10 % of pi sqrt(m/k_n) (about 1.6e-4 s)
+checks=$((checks + 1))
+lmp 1 "$TMP/dt.log" -in "$DECKS/in.errors" -var pstyle gran/capillary -var pcoeff "$GOOD" \
+    -var dt 1e-3 >/dev/null 2>&1 || fail "time step: LAMMPS failed: $(grep -m1 ERROR "$TMP/dt.log")"
+count=$(grep -c 'WARNING: pair gran/capillary: time step 0.001 s exceeds 10% of pi sqrt(m/k)' "$TMP/dt.log")
+[ "$count" -eq 1 ] || fail "time step: $count warnings, expected 1"
+limit=$(sed -n 's/.*exceeds 10% of pi sqrt(m\/k) = \([^ ]*\) s.*/\1/p' "$TMP/dt.log" | head -1)
+# m = 4/3 pi (1 mm)^3 2500 kg/m^3, k = k_n = 100 N/m: pi sqrt(m/k)
+close_rel "time step: pi sqrt(m/k) in the warning" "$limit" \
+    "$(awk 'BEGIN { pi = atan2(0, -1); m = 4 / 3 * pi * 1e-9 * 2500; printf "%.17g", pi * sqrt(m / 100) }')" 1e-5
+echo "time step: $(grep -m1 'WARNING: pair gran/capillary' "$TMP/dt.log")"
+
+finish
