@@ -3,11 +3,14 @@
 # liggghts=3.8.0+repack1-9) with Open MPI into a cache outside the repository.
 # See scripts/README.md.
 #
-# Usage: scripts/build_liggghts.sh [--models DIR] [--force] [--print-env]
+# Usage: scripts/build_liggghts.sh [--models DIR|none] [--force] [--print-env]
 #   --models DIR  copy DIR/*.h into LIGGGHTS's src/ before building (extra
 #                 contact-model headers, e.g. cohesion_model_capillary.h);
 #                 same as CAPBRIDGE_LIGGGHTS_MODELS=DIR.  DIR/*.whitelist
 #                 files add GRAN_MODEL(...) lines to the instantiated list.
+#                 Default: the repository's lammps_pair/liggghts (our
+#                 `cohesion capillary`); `--models none` builds LIGGGHTS
+#                 without extra models.
 #   --force       rebuild even if the cache stamp matches
 #   --print-env   only print the env file of a finished build (fails if none)
 # Environment:
@@ -16,6 +19,12 @@
 #   CAPBRIDGE_LIGGGHTS_MODELS    see --models
 #   CAPBRIDGE_LIGGGHTS_ALL_MODELS=1  instantiate LIGGGHTS's default contact
 #                 model list (119 combinations, slow) instead of our short one
+#
+# The capbridge C core (src_c/*.c) is compiled into a static PIC library in
+# the cache (capbridge-core/lib/libcapbridge.a, header in
+# capbridge-core/include/) and linked into liggghts and libliggghts.so; its
+# header capbridge.h is copied into LIGGGHTS's src/ next to the model
+# headers.  A change of the core only rebuilds the library and relinks.
 #
 # Result: $CAPBRIDGE_CACHE/liggghts-3.8.0/liggghts.env (KEY=VALUE lines, also
 # printed on stdout at the end).
@@ -69,7 +78,21 @@ CMAKE_FLAGS=(
 )
 BUILD_TARGETS=(liggghts_bin liggghts_shared)
 
-models_dir="${CAPBRIDGE_LIGGGHTS_MODELS:-}"
+# The capbridge core: compiled here (C99, position independent: it goes into
+# libliggghts.so too) into a stable path, so that the link flag below never
+# changes.  Link flags do not force a fresh build directory (only compile
+# flags do): CMAKE_CXX_STANDARD_LIBRARIES is appended to every C++ link line,
+# after the objects, as a static archive must be.
+REPO_DIR="$(cd "$SCRIPT_DIR/.." && pwd)"
+CORE_SRC="$REPO_DIR/src_c"
+CORE_DIR="$CACHE_DIR/capbridge-core"
+CORE_CC="${CAPBRIDGE_CORE_CC:-cc}"
+CORE_CFLAGS="-std=c99 -O2 -fPIC -DNDEBUG"
+LINK_FLAGS=(
+  "-DCMAKE_CXX_STANDARD_LIBRARIES=$CORE_DIR/lib/libcapbridge.a -lm"
+)
+
+models_dir="${CAPBRIDGE_LIGGGHTS_MODELS-$REPO_DIR/lammps_pair/liggghts}"
 force=0
 print_only=0
 while [ $# -gt 0 ]; do
@@ -89,6 +112,8 @@ if [ "$print_only" -eq 1 ]; then
   cat "$ENV_FILE"
   exit 0
 fi
+
+[ "$models_dir" = none ] && models_dir=""
 
 # --- inputs that define the build ------------------------------------------
 patches=()
@@ -140,19 +165,51 @@ MODELS_KEY="none"
 if [ "${#model_headers[@]}" -gt 0 ] || [ "${#model_wl[@]}" -gt 0 ]; then
   MODELS_KEY="$(hash_files "${model_headers[@]+"${model_headers[@]}"}" "${model_wl[@]+"${model_wl[@]}"}")"
 fi
-BUILD_KEY="$( { echo "$TREE_KEY"; printf '%s\n' "${CMAKE_FLAGS[@]}"; echo "$MODELS_KEY"; echo "$whitelist_text"; } | sha256sum | cut -c1-16)"
+core_sources=()
+while IFS= read -r p; do core_sources+=("$p"); done < <(find "$CORE_SRC" -maxdepth 1 \( -name '*.c' -o -name '*.h' \) | LC_ALL=C sort)
+[ -f "$CORE_SRC/capbridge.h" ] || die "capbridge core not found: $CORE_SRC/capbridge.h"
+CORE_SOURCES_KEY="$(hash_files "${core_sources[@]}")"
+CORE_KEY="$( { echo "$CORE_SOURCES_KEY"; echo "$CORE_CC $CORE_CFLAGS"; } | sha256sum | cut -c1-16)"
+BUILD_KEY="$( { echo "$TREE_KEY"; printf '%s\n' "${CMAKE_FLAGS[@]}" "${LINK_FLAGS[@]}"; echo "$MODELS_KEY"; echo "$CORE_KEY"; echo "$whitelist_text"; } | sha256sum | cut -c1-16)"
+
+# The env file (also rewritten on a cache hit, so that it always has the
+# current format: it holds nothing the build key does not determine).
+write_env() {
+  local tmp_env="$ENV_FILE.tmp"
+  cat > "$tmp_env" <<EOF
+# Written by capbridge scripts/build_liggghts.sh; source this file.
+LIGGGHTS_VERSION=3.8.0
+LIGGGHTS_DEB_VERSION=$DEB_VERSION
+LIGGGHTS_PREFIX=$PREFIX
+LIGGGHTS_BINARY=$PREFIX/bin/liggghts
+LIGGGHTS_LIBRARY=$PREFIX/lib/libliggghts.so
+LIGGGHTS_SOURCE_DIR=$SRC_DIR/src
+LIGGGHTS_BUILD_DIR=$BUILD_DIR
+LIGGGHTS_MODELS_DIR=${models_dir}
+LIGGGHTS_MODELS_HASH=$MODELS_KEY
+LIGGGHTS_BUILD_KEY=$BUILD_KEY
+LIGGGHTS_CONTACT_WHITELIST=$SRC_DIR/src/style_contact_model.whitelist
+LIGGGHTS_CAPBRIDGE_CORE=$CORE_DIR
+LIGGGHTS_CORE_HASH=$CORE_KEY
+LIGGGHTS_CORE_SOURCES_HASH=$CORE_SOURCES_KEY
+LIGGGHTS_MPIRUN="mpirun --allow-run-as-root --oversubscribe"
+EOF
+  mv "$tmp_env" "$ENV_FILE"
+}
 
 if [ "$force" -eq 0 ] && [ -f "$STAMP" ] && [ "$(cat "$STAMP")" = "$BUILD_KEY" ] \
    && [ -x "$PREFIX/bin/liggghts" ] && [ -f "$ENV_FILE" ]; then
-  log "LIGGGHTS $DEB_VERSION is cached in $CACHE_DIR (build $BUILD_KEY, models $MODELS_KEY); nothing to do"
+  log "LIGGGHTS $DEB_VERSION is cached in $CACHE_DIR (build $BUILD_KEY, models $MODELS_KEY, core $CORE_KEY); nothing to do"
+  write_env
   cat "$ENV_FILE"
   exit 0
 fi
 
 t_start=$(date +%s)
-log "building LIGGGHTS $DEB_VERSION into $CACHE_DIR (build $BUILD_KEY, tree $TREE_KEY, models $MODELS_KEY)"
+log "building LIGGGHTS $DEB_VERSION into $CACHE_DIR (build $BUILD_KEY, tree $TREE_KEY, models $MODELS_KEY, core $CORE_KEY)"
 mkdir -p "$CACHE_DIR" "$DL_DIR"
 rm -f "$STAMP"
+: > "$LOG_FILE"
 
 # --- 1. tools (Debian packages only) -------------------------------------
 apt_install ca-certificates xz-utils patch cmake ninja-build g++ make \
@@ -185,9 +242,37 @@ if [ ! -f "$SRC_ROOT/.tree-key" ] || [ "$(cat "$SRC_ROOT/.tree-key")" != "$TREE_
   echo "$TREE_KEY" > "$SRC_ROOT/.tree-key"
 fi
 
+# --- 2b. the capbridge core as a static library ---------------------------
+# Rebuilt (a few seconds) only when its sources or flags change; then the
+# LIGGGHTS binary and shared library are removed so that Ninja relinks them
+# (an archive named in CMAKE_CXX_STANDARD_LIBRARIES is not a tracked input).
+if [ "$(cat "$CORE_DIR/.core-key" 2>/dev/null)" != "$CORE_KEY" ] || [ ! -f "$CORE_DIR/lib/libcapbridge.a" ]; then
+  log "compiling the capbridge core ($CORE_SRC) into $CORE_DIR/lib/libcapbridge.a"
+  rm -rf "$CORE_DIR"
+  mkdir -p "$CORE_DIR/obj" "$CORE_DIR/lib" "$CORE_DIR/include"
+  for f in "${core_sources[@]}"; do
+    case "$f" in *.c) ;; *) continue ;; esac
+    o="$CORE_DIR/obj/$(basename "${f%.c}").o"
+    # shellcheck disable=SC2086
+    "$CORE_CC" $CORE_CFLAGS -I"$CORE_SRC" -c "$f" -o "$o" >>"$LOG_FILE" 2>&1 \
+      || { tail -n 20 "$LOG_FILE" >&2; die "compiling the capbridge core failed at $f; see $LOG_FILE"; }
+  done
+  ar rcs "$CORE_DIR/lib/libcapbridge.a.tmp" "$CORE_DIR"/obj/*.o
+  mv "$CORE_DIR/lib/libcapbridge.a.tmp" "$CORE_DIR/lib/libcapbridge.a"
+  cp "$CORE_SRC/capbridge.h" "$CORE_DIR/include/capbridge.h"
+  echo "$CORE_KEY" > "$CORE_DIR/.core-key"
+  rm -f "$BUILD_DIR/liggghts" "$BUILD_DIR/libliggghts.so"
+fi
+
 # --- 3. extra model headers ------------------------------------------------
 # Remove headers we added before that are no longer wanted, then copy the
 # current ones (only if their content changed, to keep rebuilds incremental).
+# With model headers, the core's public header goes into src/ too (the
+# models include "capbridge.h"; no -I flag, so the compile flags and with
+# them every object stay unchanged).
+if [ "${#model_headers[@]}" -gt 0 ]; then
+  model_headers+=("$CORE_DIR/include/capbridge.h")
+fi
 new_manifest=()
 for f in "${model_headers[@]+"${model_headers[@]}"}"; do
   b="$(basename "$f")"
@@ -230,14 +315,13 @@ else
 fi
 
 # --- 5. configure, build ---------------------------------------------------
-: > "$LOG_FILE"
 if [ -f "$BUILD_DIR/CMakeCache.txt" ] && [ "$(cat "$BUILD_DIR/.capbridge-flags" 2>/dev/null)" != "$(printf '%s\n' "${CMAKE_FLAGS[@]}")" ]; then
   log "configuration changed: fresh build directory"
   rm -rf "$BUILD_DIR"
 fi
 mkdir -p "$BUILD_DIR"
 log "configuring (log: $LOG_FILE)"
-if ! cmake -S "$SRC_DIR/src" -B "$BUILD_DIR" "${CMAKE_FLAGS[@]}" -Wno-dev >>"$LOG_FILE" 2>&1; then
+if ! cmake -S "$SRC_DIR/src" -B "$BUILD_DIR" "${CMAKE_FLAGS[@]}" "${LINK_FLAGS[@]}" -Wno-dev >>"$LOG_FILE" 2>&1; then
   tail -n 40 "$LOG_FILE" >&2
   die "cmake configure failed; full log: $LOG_FILE"
 fi
@@ -271,23 +355,7 @@ smoke="$(cd "$CACHE_DIR" && printf 'print "capbridge-smoke-ok"\n' | "$LIG" -log 
 grep -q 'capbridge-smoke-ok' <<<"$smoke" || die "$LIG did not run a trivial input: $smoke"
 
 # --- 7. env file -----------------------------------------------------------
-tmp_env="$ENV_FILE.tmp"
-cat > "$tmp_env" <<EOF
-# Written by capbridge scripts/build_liggghts.sh; source this file.
-LIGGGHTS_VERSION=3.8.0
-LIGGGHTS_DEB_VERSION=$DEB_VERSION
-LIGGGHTS_PREFIX=$PREFIX
-LIGGGHTS_BINARY=$PREFIX/bin/liggghts
-LIGGGHTS_LIBRARY=$PREFIX/lib/libliggghts.so
-LIGGGHTS_SOURCE_DIR=$SRC_DIR/src
-LIGGGHTS_BUILD_DIR=$BUILD_DIR
-LIGGGHTS_MODELS_DIR=${models_dir}
-LIGGGHTS_MODELS_HASH=$MODELS_KEY
-LIGGGHTS_BUILD_KEY=$BUILD_KEY
-LIGGGHTS_CONTACT_WHITELIST=$SRC_DIR/src/style_contact_model.whitelist
-LIGGGHTS_MPIRUN="mpirun --allow-run-as-root --oversubscribe"
-EOF
-mv "$tmp_env" "$ENV_FILE"
+write_env
 echo "$BUILD_KEY" > "$STAMP"
 
 t_end=$(date +%s)

@@ -1,0 +1,123 @@
+/* capbridge_liggghts_settings.h — word-valued keywords for a LIGGGHTS 3.8 contact model.
+ *
+ * Part of capbridge (lammps_pair/liggghts/). Compiled inside LIGGGHTS: C++98 and C++11.
+ *
+ * LIGGGHTS passes the keywords that follow the model names of `pair_style gran` and
+ * `fix wall/gran` to a Settings object (settings.h). A model may register on/off, yes/no
+ * and number keywords through Settings' public interface; Settings also implements
+ * word-valued keywords (EnumSetting) but keeps the method that registers them private.
+ * `cohesion capillary` needs words (`law willett`, `rupture lian`, `liquid protocol2`), so
+ * this header adds a Setting subclass for words and inserts it into the Settings' map.
+ *
+ * The map is a private member of Settings. It is reached with the one access path C++
+ * leaves open on purpose: names used in an explicit instantiation are not access checked
+ * ([temp.explicit], C++98 14.7.2/8), so an explicit instantiation may take the address of
+ * a private member and hand it to a friend function. No LIGGGHTS file is changed and no
+ * layout is assumed; if a later LIGGGHTS renames the member, this fails to compile rather
+ * than misbehaving. The explicit instantiation appears in every translation unit that
+ * includes this header; GCC and Clang treat the repeated instantiation (whose only
+ * product is an inline friend) like any inline function.
+ */
+#ifndef CAPBRIDGE_LIGGGHTS_SETTINGS_H_
+#define CAPBRIDGE_LIGGGHTS_SETTINGS_H_
+
+#include "settings.h"
+
+#include <cstdio>
+#include <map>
+#include <string>
+
+namespace capbridge_liggghts {
+
+typedef std::map<std::string, Setting *> SettingMap;
+typedef SettingMap Settings::*SettingMapMember;
+
+/* The map of a Settings object (defined by the explicit instantiation below). */
+SettingMap &settings_map(Settings &settings);
+
+template <SettingMapMember Member>
+struct SettingsMapAccess {
+    friend SettingMap &settings_map(Settings &settings) { return settings.*Member; }
+};
+template struct SettingsMapAccess<&Settings::settings>;
+
+/* Checks a word; on failure writes the complete error message into `why`. */
+typedef bool (*WordCheck)(const std::string &keyword, const std::string &value,
+                          std::string &why);
+
+/* `keyword word`: stores the word into a std::string of the model. */
+class WordSetting : public Setting {
+  public:
+    WordSetting(const std::string &keyword, WordCheck check)
+        : Setting(keyword, 1), check_(check), current_(), given_(false), target_(NULL),
+          given_target_(NULL)
+    {
+    }
+    virtual ~WordSetting() {}
+
+    void set_default(const std::string &value) { current_ = value; store(); }
+    void register_target(std::string &target, bool *given)
+    {
+        target_ = &target;
+        given_target_ = given;
+        store();
+    }
+
+    int parseArguments(char **args)
+    {
+        if (name != args[0]) return 0;
+        if (args[1] == NULL) {
+            error_message = "cohesion model capillary: keyword '" + name + "' needs a value";
+            return -1;
+        }
+        std::string value(args[1]);
+        std::string why;
+        if (check_ && !check_(name, value, why)) {
+            error_message = why;
+            return -1;
+        }
+        current_ = value;
+        given_ = true;
+        store();
+        return 2;
+    }
+
+    void print_value(FILE *out) { fprintf(out, "%s", current_.c_str()); }
+
+  private:
+    void store()
+    {
+        if (target_) *target_ = current_;
+        if (given_target_) *given_target_ = given_;
+    }
+    WordCheck check_;
+    std::string current_;
+    bool given_;
+    std::string *target_;
+    bool *given_target_;
+};
+
+/* Register `keyword` (default value `initial`) in `settings`, bound to `target`;
+ * *given (may be NULL) tells whether the keyword appeared. */
+inline void register_word(Settings &settings, const std::string &keyword,
+                          const std::string &initial, WordCheck check, std::string &target,
+                          bool *given)
+{
+    SettingMap &map = settings_map(settings);
+    WordSetting *setting = NULL;
+    SettingMap::iterator it = map.find(keyword);
+    if (it == map.end()) {
+        setting = new WordSetting(keyword, check); /* owned (deleted) by Settings */
+        setting->set_default(initial);
+        map[keyword] = setting;
+    } else {
+        setting = dynamic_cast<WordSetting *>(it->second);
+        if (!setting) return; /* another model owns this keyword: leave it alone */
+    }
+    if (given) *given = false;
+    setting->register_target(target, given);
+}
+
+} /* namespace capbridge_liggghts */
+
+#endif /* CAPBRIDGE_LIGGGHTS_SETTINGS_H_ */

@@ -1,0 +1,781 @@
+/* ----------------------------------------------------------------------
+   cohesion_model_capillary.h — `cohesion capillary` for LIGGGHTS-PUBLIC 3.8.0:
+   liquid-bridge (capillary) cohesion between spheres, computed by the capbridge C core.
+
+   Part of capbridge (lammps_pair/liggghts/; documentation in README.md and
+   doc/cohesion_model_capillary.txt there). This header is copied into LIGGGHTS's src/
+   by scripts/build_liggghts.sh and compiled with the rest of LIGGGHTS: it is valid
+   C++98 and C++11. It includes one header of the core, capbridge.h, and links against
+   the core's static library (libcapbridge.a).
+
+     pair_style gran model hertz tangential history cohesion capillary law willett &
+                rupture default overlap contact validity extend liquid fixed &
+                capillary_friction on tally off
+
+   What lives where:
+     - the force, the rupture distance, the bridge transitions (form / hold / rupture)
+       and Richefeu's Protocol 2 (split of a broken bridge's liquid, take-all at
+       formation) are the core's: cb_force, cb_bridge_update, cb_protocol2_release,
+       cb_protocol2_take. This file only gathers the engine's data, stores the bridge
+       state in LIGGGHTS's contact history and does the MPI communication.
+     - the bridge state of a pair {volume, active} is two values of the contact
+       history (capillaryBridgeVolume, capillaryBridgeActive): it moves with the atoms,
+       survives re-neighboring and goes into restart files with the rest of the
+       contact history.
+     - parameters come from fix property/global (surfaceTension, contactAngle,
+       bridgeVolume), per-particle free liquid from fix property/atom freeLiquid.
+     - walls are dry: a fix wall/gran with `cohesion capillary` adds no force.
+
+   Parallel consistency (LIGGGHTS requires `newton off` with contact history): a pair
+   whose atoms live on two ranks is computed on both, each rank updating only its own
+   atoms. Both copies take the same decisions because they see the same positions and
+   (Protocol 2) the same free liquid: the free liquid of ghosts is communicated at the
+   start of every force pass, and the bridges that form in a pass take the free liquid
+   as it was at its start. When k bridges form on one particle in the same step, each
+   takes 1/k of that particle's free liquid (Richefeu 2007 does not say; an equal split
+   keeps the result independent of the order of the neighbor list and of the number of
+   ranks). Liquid a bridge releases in a step is free liquid from the next step on.
+------------------------------------------------------------------------- */
+
+#ifdef COHESION_MODEL
+COHESION_MODEL(COHESION_CAPILLARY,capillary,9)
+#else
+
+#ifndef COHESION_MODEL_CAPILLARY_H_
+#define COHESION_MODEL_CAPILLARY_H_
+
+#include "contact_models.h"
+#include "cohesion_model_base.h"
+#include "capbridge_liggghts_settings.h"
+#include "capbridge.h"
+#include "global_properties.h"
+#include "fix_property_atom.h"
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "modify.h"
+#include "neighbor.h"
+#include "update.h"
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace MODEL_PARAMS
+{
+    /* bridgeVolume: the liquid volume of a new bridge [m^3], per pair of atom types
+     * (liquid fixed). Not `static`: one creator address in every translation unit. */
+    inline MatrixProperty* createCapillaryBridgeVolume(PropertyRegistry & registry,
+                                                       const char * caller, bool)
+    {
+        return createPerTypePairProperty(registry, "bridgeVolume", caller);
+    }
+}
+
+namespace capbridge_liggghts
+{
+    /* false for NaN and infinities (std::isfinite is C++11) */
+    inline bool is_finite(const double x) { return x == x && x - x == 0.0; }
+
+    /* Word checks for the keywords (the message is the complete error). */
+    inline bool check_law(const std::string &, const std::string &value, std::string &why)
+    {
+        cb_model model;
+        if (cb_model_from_name(value.c_str(), &model) == CB_OK) return true;
+        why = "cohesion model capillary: law '" + value + "' is unknown; allowed: " +
+              std::string(cb_law_names());
+        return false;
+    }
+
+    inline bool check_one_of(const std::string &keyword, const std::string &value,
+                             const char *const *allowed, std::string &why)
+    {
+        std::string list;
+        for (int k = 0; allowed[k]; ++k) {
+            if (value == allowed[k]) return true;
+            if (k) list += ", ";
+            list += allowed[k];
+        }
+        why = "cohesion model capillary: " + keyword + " '" + value + "' is unknown; allowed: " +
+              list;
+        return false;
+    }
+
+    inline bool check_rupture(const std::string &k, const std::string &v, std::string &why)
+    {
+        static const char *const allowed[] = {"default", "lian", "willett", "exact", NULL};
+        return check_one_of(k, v, allowed, why);
+    }
+    inline bool check_overlap(const std::string &k, const std::string &v, std::string &why)
+    {
+        static const char *const allowed[] = {"contact", "none", NULL};
+        return check_one_of(k, v, allowed, why);
+    }
+    inline bool check_validity(const std::string &k, const std::string &v, std::string &why)
+    {
+        static const char *const allowed[] = {"extend", "strict", NULL};
+        return check_one_of(k, v, allowed, why);
+    }
+    inline bool check_liquid(const std::string &k, const std::string &v, std::string &why)
+    {
+        static const char *const allowed[] = {"fixed", "protocol2", NULL};
+        return check_one_of(k, v, allowed, why);
+    }
+    inline bool check_number(const std::string &k, const std::string &v, std::string &why)
+    {
+        char *end = NULL;
+        const double x = strtod(v.c_str(), &end);
+        if (end != v.c_str() && *end == '\0' && x == x) return true;
+        why = "cohesion model capillary: " + k + " '" + v + "' is not a number";
+        return false;
+    }
+
+    /* A pair formed in this pass under Protocol 2: finished in endPass(). */
+    struct Candidate {
+        double *history;
+        int *contact_flags;
+        int i, j;
+        int itype, jtype;
+        double ra, rb, radsum, gap;
+        double en[3];
+        bool swap;
+    };
+}
+
+namespace LIGGGHTS {
+namespace ContactModels {
+
+  template<>
+  class CohesionModel<COHESION_CAPILLARY> : public CohesionModelBase {
+
+  public:
+    CohesionModel(LAMMPS * lmp, IContactHistorySetup * hsetup, class ContactModelBase * cmb) :
+      CohesionModelBase(lmp, hsetup, cmb),
+      wall_(cmb->is_wall()),
+      history_offset_(-1),
+      law_given_(false),
+      c_given_(false),
+      capillary_friction_(true),
+      tally_(false),
+      protocol2_(false),
+      model_(CB_MODEL_WILLETT),
+      surface_tension_(0.0),
+      contact_angle_(NULL),
+      bridge_volume_(NULL),
+      ntypes_(0),
+      fix_free_(NULL),
+      fix_formations_(NULL),
+      fix_bridged_(NULL),
+      fix_count_(NULL),
+      updating_(false)
+    {
+      // walls are dry: no history, no properties, no force
+      if (!wall_) {
+        history_offset_ = hsetup->add_history_value("capillaryBridgeVolume", "0");
+        hsetup->add_history_value("capillaryBridgeActive", "0");
+      }
+    }
+
+    ~CohesionModel()
+    {
+      release_laws();
+    }
+
+    void registerSettings(Settings & settings)
+    {
+      using namespace capbridge_liggghts;
+      register_word(settings, "law", "", &check_law, law_name_, &law_given_);
+      register_word(settings, "rupture", "default", &check_rupture, rupture_, NULL);
+      register_word(settings, "overlap", "contact", &check_overlap, overlap_, NULL);
+      register_word(settings, "validity", "extend", &check_validity, validity_, NULL);
+      register_word(settings, "richefeu_c", "0.9", &check_number, richefeu_c_, &c_given_);
+      register_word(settings, "liquid", "fixed", &check_liquid, liquid_, NULL);
+      settings.registerOnOff("capillary_friction", capillary_friction_, true);
+      settings.registerOnOff("tally", tally_, false);
+    }
+
+    inline void postSettings(IContactHistorySetup *, ContactModelBase *)
+    {
+      protocol2_ = (liquid_ == "protocol2");
+      if (wall_) return;
+      if (law_given_) {
+        if (cb_model_from_name(law_name_.c_str(), &model_) != CB_OK)
+          fail_all("cohesion model capillary: law '" + law_name_ + "' is unknown; allowed: " +
+                   cb_law_names());
+      }
+      // the per-atom arrays of the model exist from the pair_style command on, so that
+      // dumps and computes defined before the first run can refer to them
+      if (protocol2_) fix_formations_ = internal_fix("capillaryFormations", "yes");
+      if (tally_) {
+        fix_bridged_ = internal_fix("bridgedLiquid", "no");
+        fix_count_ = internal_fix("bridgeCount", "no");
+      }
+    }
+
+    void connectToProperties(PropertyRegistry & registry)
+    {
+      if (wall_) {
+        if (comm->me == 0)
+          error->warning(FLERR, "cohesion model capillary: walls are dry, a fix wall/gran "
+                                "with 'cohesion capillary' adds no capillary force");
+        return;
+      }
+      const char *caller = "cohesion model capillary";
+      if (!law_given_)
+        fail_all(std::string("cohesion model capillary needs 'law NAME' after "
+                             "'cohesion capillary' in pair_style gran; NAME is one of ") +
+                 cb_law_names());
+      if (force->cg_active())
+        error->cg(FLERR, "cohesion model capillary");
+      if (force->newton_pair)
+        error->all(FLERR, "cohesion model capillary requires 'newton off'");
+
+      registry.registerProperty("surfaceTension", &MODEL_PARAMS::createSurfaceTension);
+      registry.registerProperty("contactAngle", &MODEL_PARAMS::createContactAngle);
+      registry.connect("surfaceTension", surface_tension_, caller);
+      registry.connect("contactAngle", contact_angle_, caller);
+      if (!protocol2_) {
+        registry.registerProperty("bridgeVolume", &MODEL_PARAMS::createCapillaryBridgeVolume);
+        registry.connect("bridgeVolume", bridge_volume_, caller);
+      }
+      ntypes_ = registry.max_type();
+
+      check_properties();
+      build_laws();
+      connect_per_atom();
+      register_reach(registry);
+    }
+
+    void beginPass(SurfacesIntersectData & sidata, ForceData &, ForceData &)
+    {
+      if (wall_) return;
+      // state changes only in real force passes (also in setup: the bridge that
+      // exists at the start is formed there); not for compute pair/gran/local
+      updating_ = sidata.computeflag != 0;
+      if (!updating_) return;
+      const int nall = atom->nlocal + atom->nghost;
+      if (protocol2_) {
+        fix_free_->do_forward_comm();
+        double *nform = fix_formations_->vector_atom;
+        for (int k = 0; k < nall; ++k) nform[k] = 0.0;
+        released_.assign(atom->nlocal > 0 ? atom->nlocal : 1, 0.0);
+        candidates_.clear();
+      }
+      if (tally_) {
+        double *bridged = fix_bridged_->vector_atom;
+        double *count = fix_count_->vector_atom;
+        for (int k = 0; k < nall; ++k) bridged[k] = count[k] = 0.0;
+      }
+    }
+
+    void endPass(SurfacesIntersectData &, ForceData &, ForceData &)
+    {
+      if (wall_ || !updating_) return;
+      updating_ = false;
+      if (!protocol2_) return;
+      finish_formations();
+    }
+
+    inline void endSurfacesIntersect(SurfacesIntersectData &, ForceData &, ForceData &) {}
+
+    void surfacesIntersect(SurfacesIntersectData & sidata, ForceData & i_forces, ForceData & j_forces)
+    {
+      if (wall_) return;
+      const double gap = sidata.r - sidata.radsum;
+      const double capillary = pair_force(sidata, gap, sidata.en);
+      if (capillary > 0.0) {
+        apply(capillary, sidata.en, i_forces, j_forces);
+        // Richefeu 2007 eq. 12: Coulomb limit mu (f_n - f_n^c), f_n^c = -force.
+        // The tangential model (called after the cohesion model) reads |sidata.Fn|.
+        if (capillary_friction_) sidata.Fn += capillary;
+      }
+    }
+
+    void surfacesClose(SurfacesCloseData & scdata, ForceData & i_forces, ForceData & j_forces)
+    {
+      if (wall_) return;
+      const double r = std::sqrt(scdata.rsq);
+      const double rinv = 1.0 / r;
+      const double en[3] = {scdata.delta[0] * rinv, scdata.delta[1] * rinv,
+                            scdata.delta[2] * rinv};
+      const double gap = r - scdata.radsum;
+      const double capillary = pair_force(scdata, gap, en);
+      if (capillary > 0.0) {
+        apply(capillary, en, i_forces, j_forces);
+        scdata.has_force_update = true;
+      }
+    }
+
+  private:
+    /* The bridge of one pair: its transition (in updating passes) and its force. */
+    double pair_force(SurfacesCloseData & d, const double gap, const double *en)
+    {
+      if (!d.contact_history)
+        error->one(FLERR, "cohesion model capillary: no contact history for a pair (internal)");
+      double * const hist = &d.contact_history[history_offset_];
+      cb_bridge bridge;
+      bridge.volume = hist[0];
+      bridge.active = hist[1];
+
+      const int i = d.i, j = d.j;
+      const int nlocal = atom->nlocal;
+      const bool j_local = j < nlocal;
+      // The core gets the radii in a fixed order (smaller first), so that the two ranks
+      // holding a pair, which see it as (i, j) and (j, i), compute the same numbers.
+      const bool swap = d.radj < d.radi;
+      const double ra = swap ? d.radj : d.radi;
+      const double rb = swap ? d.radi : d.radj;
+      const cb_law *law = law_for(d.itype, d.jtype);
+
+      if (updating_ && (bridge.active != 0.0 || gap <= 0.0)) {
+        // (a dry pair that does not touch stays dry: nothing to do)
+        if (!protocol2_) {
+          const double available = bridge_volume_[d.itype][d.jtype];
+          cb_transition change = CB_BRIDGE_STAYS_DRY;
+          double released = 0.0;
+          check(cb_bridge_update(law, ra, rb, gap, available, &bridge, &change, &released),
+                "bridge update", d, gap, bridge.volume);
+          if (change == CB_BRIDGE_FORMED) check_reach(law, ra, rb, d.radsum, bridge.volume, d);
+          // fixed volume: the liquid of a broken bridge leaves the system
+        } else if (bridge.active != 0.0) {
+          cb_transition change = CB_BRIDGE_HELD;
+          double released = 0.0;
+          check(cb_bridge_update(law, ra, rb, gap, 0.0, &bridge, &change, &released),
+                "bridge update", d, gap, bridge.volume);
+          if (change == CB_BRIDGE_RUPTURED) {
+            double share_a = 0.0, share_b = 0.0;
+            check(cb_protocol2_release(released, ra, rb, &share_a, &share_b),
+                  "Protocol 2 release", d, gap, released);
+            released_[i] += swap ? share_b : share_a;
+            if (j_local) released_[j] += swap ? share_a : share_b;
+          }
+        } else if (gap <= 0.0) {
+          const double *free_liquid = fix_free_->vector_atom;
+          if (free_liquid[i] + free_liquid[j] > 0.0) {
+            // a new bridge: it takes its liquid in endPass, once every rank knows how
+            // many bridges form on each particle in this step
+            double *nform = fix_formations_->vector_atom;
+            nform[i] += 1.0;
+            if (j_local) nform[j] += 1.0;
+            capbridge_liggghts::Candidate c;
+            c.history = hist;
+            c.contact_flags = d.contact_flags;
+            c.i = i;
+            c.j = j;
+            c.itype = d.itype;
+            c.jtype = d.jtype;
+            c.ra = ra;
+            c.rb = rb;
+            c.radsum = d.radsum;
+            c.gap = gap;
+            c.en[0] = en[0];
+            c.en[1] = en[1];
+            c.en[2] = en[2];
+            c.swap = swap;
+            candidates_.push_back(c);
+          }
+        }
+        hist[0] = bridge.volume;
+        hist[1] = bridge.active;
+        if (tally_ && bridge.active != 0.0) tally(i, j_local ? j : -1, bridge.volume);
+      }
+
+      if (bridge.active == 0.0) {
+        if (d.contact_flags) *d.contact_flags &= ~CONTACT_COHESION_MODEL;
+        return 0.0;
+      }
+      // keeps the pair's history through re-neighboring while the bridge exists
+      if (d.contact_flags) *d.contact_flags |= CONTACT_COHESION_MODEL;
+      double capillary = 0.0;
+      check(cb_force(law, ra, rb, bridge.volume, gap, &capillary, NULL), "force", d, gap,
+            bridge.volume);
+      return capillary;
+    }
+
+    /* Protocol 2: the bridges that formed in this pass take their liquid. */
+    void finish_formations()
+    {
+      fix_formations_->do_forward_comm();
+      double *free_liquid = fix_free_->vector_atom;
+      const double *nform = fix_formations_->vector_atom;
+      const int nlocal = atom->nlocal;
+      double **f = atom->f;
+      for (size_t k = 0; k < candidates_.size(); ++k) {
+        const capbridge_liggghts::Candidate &c = candidates_[k];
+        // each of the nform[i] new bridges of particle i takes 1/nform[i] of its liquid
+        double from_i = free_liquid[c.i] / nform[c.i];
+        double from_j = free_liquid[c.j] / nform[c.j];
+        double volume = 0.0;
+        double *from_a = c.swap ? &from_j : &from_i;
+        double *from_b = c.swap ? &from_i : &from_j;
+        check_at(cb_protocol2_take(from_a, from_b, &volume), "Protocol 2 take", c.i, c.j,
+                 c.gap, volume);
+        const cb_law *law = law_for(c.itype, c.jtype);
+        cb_bridge bridge;
+        bridge.volume = 0.0;
+        bridge.active = 0.0;
+        cb_transition change = CB_BRIDGE_STAYS_DRY;
+        double released = 0.0;
+        check_at(cb_bridge_update(law, c.ra, c.rb, c.gap, volume, &bridge, &change, &released),
+                 "bridge update", c.i, c.j, c.gap, volume);
+        if (change != CB_BRIDGE_FORMED) continue;
+        check_reach_at(law, c.ra, c.rb, c.radsum, bridge.volume, c.i, c.j);
+        c.history[0] = bridge.volume;
+        c.history[1] = bridge.active;
+        if (c.contact_flags) *c.contact_flags |= CONTACT_COHESION_MODEL;
+        const bool j_local = c.j < nlocal;
+        if (tally_) tally(c.i, j_local ? c.j : -1, bridge.volume);
+        double capillary = 0.0;
+        check_at(cb_force(law, c.ra, c.rb, bridge.volume, c.gap, &capillary, NULL), "force",
+                 c.i, c.j, c.gap, bridge.volume);
+        // attraction: i towards j (en points from j to i)
+        for (int k3 = 0; k3 < 3; ++k3) {
+          f[c.i][k3] -= capillary * c.en[k3];
+          if (j_local) f[c.j][k3] += capillary * c.en[k3];
+        }
+      }
+      for (int i = 0; i < nlocal; ++i) {
+        if (nform[i] > 0.0) free_liquid[i] = 0.0;
+        free_liquid[i] += released_[i];
+      }
+      candidates_.clear();
+    }
+
+    void apply(const double capillary, const double *en, ForceData & i_forces,
+               ForceData & j_forces)
+    {
+      // en points from j to i: the attraction pulls i along -en, j along +en
+      const double fx = -capillary * en[0];
+      const double fy = -capillary * en[1];
+      const double fz = -capillary * en[2];
+      i_forces.delta_F[0] += fx;
+      i_forces.delta_F[1] += fy;
+      i_forces.delta_F[2] += fz;
+      j_forces.delta_F[0] -= fx;
+      j_forces.delta_F[1] -= fy;
+      j_forces.delta_F[2] -= fz;
+    }
+
+    /* Per-atom output: half of every bridge's liquid and one count per bridge end. */
+    void tally(const int i, const int j, const double volume)
+    {
+      double *bridged = fix_bridged_->vector_atom;
+      double *count = fix_count_->vector_atom;
+      bridged[i] += 0.5 * volume;
+      count[i] += 1.0;
+      if (j >= 0) {
+        bridged[j] += 0.5 * volume;
+        count[j] += 1.0;
+      }
+    }
+
+    const cb_law *law_for(const int itype, const int jtype) const
+    {
+      return &laws_[pair_law_[itype * (ntypes_ + 1) + jtype]];
+    }
+
+    /* ---------------------------------------------------------------- errors */
+
+    void fail_all(const std::string &message)
+    {
+      error->all(FLERR, message.c_str());
+    }
+
+    void check(const cb_status status, const char *what, const SurfacesCloseData & d,
+               const double gap, const double volume)
+    {
+      if (status != CB_OK) check_at(status, what, d.i, d.j, gap, volume);
+    }
+
+    void check_at(const cb_status status, const char *what, const int i, const int j,
+                  const double gap, const double volume)
+    {
+      if (status == CB_OK) return;
+      char text[512];
+      snprintf(text, sizeof text,
+               "cohesion model capillary: %s failed for particles %d and %d (law %s, radii "
+               "%g and %g m, gap %g m, volume %g m^3): %s",
+               what, atom->tag[i], atom->tag[j], cb_model_name(model_), atom->radius[i],
+               atom->radius[j], gap, volume, cb_status_message(status));
+      error->one(FLERR, text);
+    }
+
+    /* A bridge must rupture while LIGGGHTS still visits its pair: the pair loop calls
+     * surfacesClose only for r < contact_distance_factor * radsum. */
+    void check_reach(const cb_law *law, const double ra, const double rb, const double radsum,
+                     const double volume, const SurfacesCloseData & d)
+    {
+      check_reach_at(law, ra, rb, radsum, volume, d.i, d.j);
+    }
+
+    void check_reach_at(const cb_law *law, const double ra, const double rb,
+                        const double radsum, const double volume, const int i, const int j)
+    {
+      double rupture = 0.0;
+      check_at(cb_rupture_distance(law, ra, rb, volume, &rupture), "rupture distance", i, j,
+               0.0, volume);
+      const double reach = (neighbor->contactDistanceFactor - 1.0) * radsum;
+      if (rupture * reach_margin() <= reach) return;
+      char text[512];
+      snprintf(text, sizeof text,
+               "cohesion model capillary: the bridge between particles %d and %d (volume %g "
+               "m^3) ruptures at a gap of %g m, beyond the gap %g m up to which LIGGGHTS "
+               "visits the pair (contact distance factor %g); raise it with "
+               "'neigh_modify contact_distance_factor %.4g'",
+               atom->tag[i], atom->tag[j], volume, rupture, reach / reach_margin(),
+               neighbor->contactDistanceFactor, 1.0 + 1.1 * reach_margin() * rupture / radsum);
+      error->one(FLERR, text);
+    }
+
+    /* ---------------------------------------------------------------- set-up */
+
+    void check_properties()
+    {
+      char text[512];
+      if (!(surface_tension_ > 0.0) || !capbridge_liggghts::is_finite(surface_tension_)) {
+        snprintf(text, sizeof text,
+                 "cohesion model capillary: surfaceTension = %g N/m; it must be > 0 "
+                 "(fix property/global surfaceTension scalar VALUE)",
+                 surface_tension_);
+        error->all(FLERR, text);
+      }
+      for (int t = 1; t <= ntypes_; ++t) {
+        const double degrees = contact_angle_[t] * 180.0 / M_PI;
+        if (!(contact_angle_[t] >= 0.0 && contact_angle_[t] < 0.5 * M_PI)) {
+          snprintf(text, sizeof text,
+                   "cohesion model capillary: contactAngle of atom type %d is %g degrees; "
+                   "it must satisfy 0 <= contactAngle < 90",
+                   t, degrees);
+          error->all(FLERR, text);
+        }
+      }
+      if (!protocol2_) {
+        for (int a = 1; a <= ntypes_; ++a)
+          for (int b = 1; b <= ntypes_; ++b) {
+            const double v = bridge_volume_[a][b];
+            if (!(v >= 0.0) || !capbridge_liggghts::is_finite(v)) {
+              snprintf(text, sizeof text,
+                       "cohesion model capillary: bridgeVolume for atom types %d %d is %g "
+                       "m^3; it must be >= 0 (0: the pair stays dry)",
+                       a, b, v);
+              error->all(FLERR, text);
+            }
+            if (v != bridge_volume_[b][a]) {
+              snprintf(text, sizeof text,
+                       "cohesion model capillary: bridgeVolume must be symmetric; types %d %d "
+                       "give %g, types %d %d give %g",
+                       a, b, v, b, a, bridge_volume_[b][a]);
+              error->all(FLERR, text);
+            }
+          }
+      }
+    }
+
+    /* One law per distinct contact angle of a pair of types, the angle of the pair being
+     * the mean of the two types' angles. Rebuilt only when something changed (the table
+     * law builds its table in cb_law_prepare). */
+    void build_laws()
+    {
+      std::vector<double> theta_of_pair((ntypes_ + 1) * (ntypes_ + 1), 0.0);
+      std::vector<double> thetas;
+      std::vector<int> index((ntypes_ + 1) * (ntypes_ + 1), 0);
+      for (int a = 1; a <= ntypes_; ++a)
+        for (int b = 1; b <= ntypes_; ++b) {
+          const double theta = 0.5 * (contact_angle_[a] + contact_angle_[b]);
+          size_t k = 0;
+          while (k < thetas.size() && thetas[k] != theta) ++k;
+          if (k == thetas.size()) thetas.push_back(theta);
+          index[a * (ntypes_ + 1) + b] = (int)k;
+        }
+      char number[64];
+      std::string key = law_name_ + "|" + rupture_ + "|" + overlap_ + "|" + validity_ + "|" +
+                        (c_given_ ? richefeu_c_ : std::string("-"));
+      snprintf(number, sizeof number, "|%.17g", surface_tension_);
+      key += number;
+      for (size_t k = 0; k < thetas.size(); ++k) {
+        snprintf(number, sizeof number, "|%.17g", thetas[k]);
+        key += number;
+      }
+      pair_law_ = index;
+      if (key == law_key_ && laws_.size() == thetas.size()) return;
+
+      release_laws();
+      law_key_.clear();
+      for (size_t k = 0; k < thetas.size(); ++k) {
+        cb_law law;
+        cb_message msg;
+        msg.text[0] = '\0';
+        cb_status status = cb_law_init(&law, model_, surface_tension_, thetas[k]);
+        if (status != CB_OK) {
+          fail_all(std::string("cohesion model capillary: ") + cb_status_message(status));
+        }
+        configure(law, "rupture", rupture_);
+        configure(law, "overlap", overlap_);
+        configure(law, "validity", validity_);
+        if (c_given_) configure(law, "c", richefeu_c_);
+        status = cb_law_prepare(&law, &msg);
+        if (status != CB_OK) {
+          cb_law_release(&law);
+          fail_all(std::string("cohesion model capillary: law ") + law_name_ + ": " + msg.text);
+        }
+        laws_.push_back(law);
+      }
+      law_key_ = key;
+    }
+
+    void configure(cb_law &law, const char *keyword, const std::string &value)
+    {
+      cb_message msg;
+      msg.text[0] = '\0';
+      if (cb_law_configure(&law, keyword, value.c_str(), &msg) != CB_OK) {
+        cb_law_release(&law);
+        fail_all(std::string("cohesion model capillary: law ") + law_name_ + ": " + msg.text);
+      }
+    }
+
+    void release_laws()
+    {
+      for (size_t k = 0; k < laws_.size(); ++k) cb_law_release(&laws_[k]);
+      laws_.clear();
+      law_key_.clear();
+    }
+
+    FixPropertyAtom *internal_fix(const char *name, const char *comm_ghost)
+    {
+      Fix *fix = modify->find_fix_property(name, "property/atom", "scalar", 0, 0,
+                                           "cohesion model capillary", false);
+      if (!fix) {
+        const char *args[9] = {name, "all", "property/atom", name, "scalar",
+                               "no", comm_ghost, "no", "0."};
+        modify->add_fix(9, const_cast<char **>(args));
+        fix = modify->find_fix_property(name, "property/atom", "scalar", 0, 0,
+                                        "cohesion model capillary");
+        // its values are set (0) for every atom already; without this, the first
+        // run's setup would reset them after the setup force pass (Modify::setup)
+        fix->just_created = 0;
+      }
+      return static_cast<FixPropertyAtom *>(fix);
+    }
+
+    /* LIGGGHTS sets the default values of a fix property/atom created since the last
+     * run in Modify::setup, i.e. after the setup force pass; Protocol 2 may already
+     * have taken free liquid in that pass. Do the same initialisation now, before it
+     * (the condition is Modify::setup's). */
+    void initialise_now(Fix *fix)
+    {
+      if (fix->recent_restart || !fix->just_created || !fix->create_attribute) return;
+      fix->just_created = 0;
+      fix->pre_set_arrays();
+      const int *mask = atom->mask;
+      for (int i = 0; i < atom->nlocal; ++i)
+        if (mask[i] & fix->groupbit) fix->set_arrays(i);
+    }
+
+    void connect_per_atom()
+    {
+      if (protocol2_) {
+        fix_free_ = static_cast<FixPropertyAtom *>(modify->find_fix_property(
+            "freeLiquid", "property/atom", "scalar", 0, 0,
+            "cohesion model capillary (liquid protocol2)"));
+        initialise_now(fix_free_);
+        if (fix_free_->comm_forward < 1)
+          error->all(FLERR, "cohesion model capillary: fix property/atom freeLiquid must be "
+                            "communicated to ghost atoms: 'fix ID all property/atom freeLiquid "
+                            "scalar yes yes no VOLUME'");
+        const double *free_liquid = fix_free_->vector_atom;
+        int bad = 0;
+        for (int i = 0; i < atom->nlocal; ++i)
+          if (!(free_liquid[i] >= 0.0) || !capbridge_liggghts::is_finite(free_liquid[i])) bad = 1;
+        int bad_all = 0;
+        MPI_Allreduce(&bad, &bad_all, 1, MPI_INT, MPI_MAX, world);
+        if (bad_all)
+          error->all(FLERR, "cohesion model capillary: freeLiquid must be >= 0 and finite "
+                            "for every particle");
+        fix_formations_ = internal_fix("capillaryFormations", "yes");
+      }
+      if (tally_) {
+        fix_bridged_ = internal_fix("bridgedLiquid", "no");
+        fix_count_ = internal_fix("bridgeCount", "no");
+      }
+    }
+
+    /* The pair loop visits a pair while r < contact_distance_factor * radsum. The
+     * factor must cover the largest rupture distance relative to the radius sum: it is
+     * estimated from the smallest and largest radius (particles and insertion fixes)
+     * and the largest bridge volume (bridgeVolume, or twice the largest free liquid),
+     * with 10 % margin. check_reach_at() verifies every bridge when it forms. */
+    void register_reach(PropertyRegistry & registry)
+    {
+      const double rmin = registry.min_radius();
+      const double rmax = registry.max_radius();
+      if (!(rmin > 0.0) || !(rmax > 0.0) || rmin > 1e100) return;
+      const double radii[3][2] = {{rmin, rmin}, {rmin, rmax}, {rmax, rmax}};
+      double protocol2_volume = 0.0;
+      if (protocol2_) {
+        double most = 0.0;
+        const double *free_liquid = fix_free_->vector_atom;
+        for (int i = 0; i < atom->nlocal; ++i)
+          if (free_liquid[i] > most) most = free_liquid[i];
+        MPI_Allreduce(&most, &protocol2_volume, 1, MPI_DOUBLE, MPI_MAX, world);
+        protocol2_volume *= 2.0;
+      }
+      double ratio = 0.0;
+      for (int a = 1; a <= ntypes_; ++a)
+        for (int b = a; b <= ntypes_; ++b) {
+          const double volume = protocol2_ ? protocol2_volume : bridge_volume_[a][b];
+          if (!(volume > 0.0)) continue;
+          for (int k = 0; k < 3; ++k) {
+            double rupture = 0.0;
+            const cb_status status = cb_rupture_distance(law_for(a, b), radii[k][0],
+                                                         radii[k][1], volume, &rupture);
+            if (status != CB_OK) {
+              if (protocol2_) continue; // only an estimate; each bridge is checked later
+              char text[512];
+              snprintf(text, sizeof text,
+                       "cohesion model capillary: bridgeVolume %g m^3 of atom types %d %d "
+                       "with radii %g and %g m: law %s (rupture %s, validity %s): %s",
+                       volume, a, b, radii[k][0], radii[k][1], law_name_.c_str(),
+                       rupture_.c_str(), validity_.c_str(), cb_status_message(status));
+              error->all(FLERR, text);
+            }
+            const double r = rupture / (radii[k][0] + radii[k][1]);
+            if (r > ratio) ratio = r;
+          }
+        }
+      if (ratio > 0.0) neighbor->register_contact_dist_factor(1.0 + 1.1 * ratio);
+    }
+
+    // the first step beyond the rupture distance must still be visited
+    static double reach_margin() { return 1.05; }
+
+    // settings
+    bool wall_;
+    int history_offset_;
+    std::string law_name_, rupture_, overlap_, validity_, richefeu_c_, liquid_;
+    bool law_given_, c_given_;
+    bool capillary_friction_, tally_;
+    bool protocol2_;
+    cb_model model_;
+    // properties
+    double surface_tension_;
+    double *contact_angle_;   // [rad], per atom type (LIGGGHTS converts from degrees)
+    double **bridge_volume_;  // [m^3], per pair of atom types (liquid fixed)
+    int ntypes_;
+    // laws: one per distinct contact angle
+    std::vector<cb_law> laws_;
+    std::vector<int> pair_law_;
+    std::string law_key_;
+    // per-atom data
+    FixPropertyAtom *fix_free_, *fix_formations_, *fix_bridged_, *fix_count_;
+    std::vector<double> released_;
+    std::vector<capbridge_liggghts::Candidate> candidates_;
+    bool updating_;
+  };
+}
+}
+
+#endif // COHESION_MODEL_CAPILLARY_H_
+#endif
