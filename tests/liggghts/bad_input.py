@@ -1,0 +1,165 @@
+#!/usr/bin/env python3
+"""Bad input for `cohesion capillary`: each case must stop LIGGGHTS with an ERROR line
+that names the problem; plus the dry wall: a fix wall/gran with `cohesion capillary`
+warns and adds no capillary force.
+
+usage: bad_input.py LIGGGHTS_ENV [--workdir DIR]
+"""
+import argparse
+import os
+import sys
+import tempfile
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import liggghts_common as lc  # noqa: E402
+
+# Two touching spheres; {props} and {pair} are filled in per case.
+DECK = """units           si
+atom_style      granular
+atom_modify     map array
+boundary        f f f
+newton          {newton}
+communicate     single vel yes
+region          box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box
+create_box      1 box
+neighbor        5e-4 bin
+neigh_modify    delay 0
+fix m1 all property/global kn peratomtypepair 1 1000
+fix m2 all property/global kt peratomtypepair 1 1000
+fix m3 all property/global gamman peratomtypepair 1 0
+fix m4 all property/global gammat peratomtypepair 1 0
+fix m5 all property/global coefficientFriction peratomtypepair 1 0.5
+{props}
+pair_style      gran model hooke/stiffness tangential history cohesion {pair}
+pair_coeff      * *
+timestep        1e-6
+create_atoms    1 single 0 0 0 units box
+create_atoms    1 single 2e-3 0 0 units box
+set             atom * diameter 2e-3 density 2500
+fix             integrate all nve/sphere
+run             10
+"""
+GAMMA = "fix m6 all property/global surfaceTension scalar 0.0728"
+THETA = "fix m7 all property/global contactAngle peratomtype 10"
+VOLUME = "fix m8 all property/global bridgeVolume peratomtypepair 1 1e-11"
+FREE = "fix freeLiquid all property/atom freeLiquid scalar yes yes no 1e-11"
+ALL = "\n".join([GAMMA, THETA, VOLUME])
+
+# (name, properties, pair_style words after `cohesion`, newton, words the ERROR must hold)
+CASES = [
+    ("missing surfaceTension", "\n".join([THETA, VOLUME]), "capillary law willett", "off",
+     ["surfaceTension"]),
+    ("missing contactAngle", "\n".join([GAMMA, VOLUME]), "capillary law willett", "off",
+     ["contactAngle"]),
+    ("missing bridgeVolume", "\n".join([GAMMA, THETA]), "capillary law willett", "off",
+     ["bridgeVolume"]),
+    ("unknown law", ALL, "capillary law foo", "off",
+     ["law 'foo'", "richefeu", "willett/reduced", "table"]),
+    ("no law given", ALL, "capillary", "off", ["law NAME", "richefeu"]),
+    ("unknown rupture rule", ALL, "capillary law willett rupture bar", "off",
+     ["rupture 'bar'", "lian"]),
+    ("unknown liquid protocol", ALL, "capillary law willett liquid protocol7", "off",
+     ["liquid 'protocol7'", "protocol2"]),
+    ("rupture exact for a closed-form law", ALL, "capillary law willett rupture exact", "off",
+     ["rupture 'exact'", "allowed lian, willett, default"]),
+    ("richefeu_c for another law", ALL, "capillary law willett richefeu_c 0.8", "off",
+     ["'c'", "richefeu only"]),
+    ("contact angle of 95 degrees",
+     "\n".join([GAMMA, "fix m7 all property/global contactAngle peratomtype 95", VOLUME]),
+     "capillary law willett", "off", ["contactAngle", "95", "90"]),
+    ("negative surface tension",
+     "\n".join(["fix m6 all property/global surfaceTension scalar -0.07", THETA, VOLUME]),
+     "capillary law willett", "off", ["surfaceTension", "-0.07"]),
+    ("negative bridgeVolume",
+     "\n".join([GAMMA, THETA, "fix m8 all property/global bridgeVolume peratomtypepair 1 -1e-11"]),
+     "capillary law willett", "off", ["bridgeVolume", "-1e-11"]),
+    ("protocol2 without freeLiquid", ALL, "capillary law willett liquid protocol2", "off",
+     ["freeLiquid"]),
+    ("freeLiquid not sent to ghosts",
+     ALL + "\nfix freeLiquid all property/atom freeLiquid scalar yes no no 1e-11",
+     "capillary law willett liquid protocol2", "off", ["freeLiquid", "ghost"]),
+    ("volume outside the validity, validity strict",
+     "\n".join([GAMMA, THETA, "fix m8 all property/global bridgeVolume peratomtypepair 1 1e-8"]),
+     "capillary law willett validity strict", "off",
+     ["bridgeVolume", "willett", "validity strict"]),
+]
+
+WALL_DECK = """units           si
+atom_style      granular
+atom_modify     map array
+boundary        f f f
+newton          off
+communicate     single vel yes
+region          box block -0.01 0.01 -0.01 0.01 -0.001 0.01 units box
+create_box      1 box
+neighbor        5e-4 bin
+neigh_modify    delay 0
+fix m1 all property/global kn peratomtypepair 1 1000
+fix m2 all property/global kt peratomtypepair 1 1000
+fix m3 all property/global gamman peratomtypepair 1 0
+fix m4 all property/global gammat peratomtypepair 1 0
+fix m5 all property/global coefficientFriction peratomtypepair 1 0.5
+{props}
+pair_style      gran model hooke/stiffness tangential history cohesion capillary law willett
+pair_coeff      * *
+fix             floor all wall/gran model hooke/stiffness tangential history &
+                cohesion capillary primitive type 1 zplane 0.0
+timestep        1e-6
+# one sphere of radius 1 mm overlapping the floor by 1 micrometre
+create_atoms    1 single 0 0 0.999e-3 units box
+set             atom * diameter 2e-3 density 2500
+fix             integrate all nve/sphere
+variable        fz equal fz[1]
+thermo_style    custom step v_fz
+thermo_modify   format float %.17g
+thermo          1
+run             1
+"""
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("env")
+    parser.add_argument("--workdir", default="")
+    args = parser.parse_args()
+    env = lc.read_env(args.env)
+    lc.check_models_current(env)
+    workdir = args.workdir or tempfile.mkdtemp(prefix="capbridge-liggghts-bad.")
+    os.makedirs(workdir, exist_ok=True)
+    ok = True
+    for k, (name, props, pair, newton, words) in enumerate(CASES):
+        deck = os.path.join(workdir, "in.bad%02d" % k)
+        with open(deck, "w") as f:
+            f.write(DECK.format(props=props, pair=pair, newton=newton))
+        code, log = lc.liggghts(env, deck, [], workdir, log="log.bad%02d" % k)
+        line = lc.error_line(log)
+        good = code != 0 and line is not None and all(w in line for w in words)
+        ok = ok and good
+        print("%-45s %s\n    %s" % (name, "ok" if good else "FAIL (exit %d)" % code,
+                                    line or "no ERROR line"))
+
+    # walls are dry: the floor pushes (k_n * overlap) and does not pull
+    deck = os.path.join(workdir, "in.wall")
+    with open(deck, "w") as f:
+        f.write(WALL_DECK.format(props=ALL))
+    code, log = lc.liggghts(env, deck, [], workdir, log="log.wall")
+    rows = lc.thermo_rows(log)
+    warned = "walls are dry" in log
+    good = code == 0 and warned and len(rows) == 2
+    if good:
+        fz = float(rows[0][1])
+        expected = 1000 * (1e-3 - 0.999e-3)
+        good = abs(fz - expected) <= 1e-9 * expected
+        detail = "fz at step 0 = %.6g N, k_n overlap = %.6g N" % (fz, expected)
+    else:
+        detail = lc.error_line(log) or "exit %d, warning %s" % (code, warned)
+    ok = ok and good
+    print("%-45s %s\n    %s" % ("dry wall (warning, no capillary force)",
+                                "ok" if good else "FAIL", detail))
+    print("bad input: %s (files in %s)" % ("PASS" if ok else "FAIL", workdir))
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

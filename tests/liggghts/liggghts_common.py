@@ -1,0 +1,154 @@
+"""Helpers shared by the LIGGGHTS tests of capbridge (tests/liggghts/*.py).
+
+Standard library only. Runs LIGGGHTS from a liggghts.env written by
+scripts/build_liggghts.sh, runs the capbridge CLI, and reads Gladkyy's 13 cases from
+reference_data/cases.csv.
+"""
+import hashlib
+import os
+import shlex
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+LAWS = ["richefeu", "willett", "willett/reduced", "rabinovich", "rabinovich/uncorrected",
+        "weigert", "soulie", "table"]
+
+
+def fail(message):
+    print("FAIL: " + message, file=sys.stderr)
+    sys.exit(1)
+
+
+def read_env(path):
+    """KEY=VALUE lines of liggghts.env (values may be double-quoted)."""
+    env = {}
+    with open(path) as f:
+        for line in f:
+            line = line.strip()
+            if not line or line.startswith("#") or "=" not in line:
+                continue
+            key, value = line.split("=", 1)
+            if len(value) >= 2 and value[0] == value[-1] == '"':
+                value = value[1:-1]
+            env[key] = value
+    for key in ("LIGGGHTS_BINARY", "LIGGGHTS_MPIRUN"):
+        if key not in env:
+            fail("%s has no %s (rerun scripts/build_liggghts.sh)" % (path, key))
+    return env
+
+
+def check_models_current(env):
+    """The LIGGGHTS build must contain this repository's model headers."""
+    models = os.path.join(REPO, "lammps_pair", "liggghts")
+    built = env.get("LIGGGHTS_MODELS_DIR", "")
+    if not built or os.path.realpath(built) != os.path.realpath(models):
+        fail("LIGGGHTS was built without %s (LIGGGHTS_MODELS_DIR=%r); run "
+             "scripts/build_liggghts.sh" % (models, built))
+    for name in sorted(os.listdir(models)):
+        if not name.endswith(".h"):
+            continue
+        src = os.path.join(env["LIGGGHTS_SOURCE_DIR"], name)
+        with open(os.path.join(models, name), "rb") as a:
+            mine = a.read()
+        try:
+            with open(src, "rb") as b:
+                theirs = b.read()
+        except OSError:
+            theirs = None
+        if mine != theirs:
+            fail("the LIGGGHTS build is older than %s; run scripts/build_liggghts.sh" % name)
+    # the C core linked into LIGGGHTS: the hash scripts/build_liggghts.sh computes
+    # (hash_files in scripts/engine_common.sh) over src_c/*.c and src_c/*.h
+    core = os.path.join(REPO, "src_c")
+    names = sorted((n for n in os.listdir(core) if n.endswith((".c", ".h"))),
+                   key=lambda n: os.path.join(core, n).encode())
+    digest = hashlib.sha256()
+    for name in names:
+        digest.update(name.encode() + b"\n")
+        with open(os.path.join(core, name), "rb") as f:
+            digest.update(f.read())
+    if env.get("LIGGGHTS_CORE_SOURCES_HASH") != digest.hexdigest()[:16]:
+        fail("the capbridge core in LIGGGHTS (%s) is not the one in src_c/ (%s); run "
+             "scripts/build_liggghts.sh" % (env.get("LIGGGHTS_CORE_SOURCES_HASH"),
+                                            digest.hexdigest()[:16]))
+
+
+def gladkyy_cases():
+    """The 13 configurations of Gladkyy & Schwarze 2014, Table 1, with their exact curves:
+    {name: {r1, r2, gamma, theta, volume, rupture, gaps[], forces[]}} in file order."""
+    path = os.path.join(REPO, "reference_data", "cases.csv")
+    cases = {}
+    order = []
+    with open(path) as f:
+        header = None
+        for line in f:
+            if line.startswith("#"):
+                continue
+            fields = line.strip().split(",")
+            if header is None:
+                header = fields
+                continue
+            row = dict(zip(header, fields))
+            name = row["case"]
+            if name not in cases:
+                order.append(name)
+                cases[name] = {
+                    "name": name, "r1": row["r1"], "r2": row["r2"],
+                    "gamma": row["surface_tension"], "theta": row["contact_angle"],
+                    "volume": row["volume"], "rupture": float(row["rupture_distance"]),
+                    "gaps": [], "forces": []}
+            cases[name]["gaps"].append(float(row["gap"]))
+            cases[name]["forces"].append(float(row["force"]))
+    return [cases[n] for n in order]
+
+
+def run(command, cwd, what, timeout=600):
+    # LIGGGHTS may print undecodable bytes (its Error::all appends a "special message"
+    # that is sometimes uninitialised memory)
+    result = subprocess.run(command, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            universal_newlines=True, encoding="utf-8", errors="replace",
+                            timeout=timeout)
+    return result
+
+
+def liggghts(env, deck, variables, workdir, ranks=1, log="log.liggghts"):
+    """Run LIGGGHTS on `deck` with -var NAME VALUE pairs; returns (returncode, log text)."""
+    command = []
+    if ranks > 1:
+        command += shlex.split(env["LIGGGHTS_MPIRUN"]) + ["-np", str(ranks)]
+    command += [env["LIGGGHTS_BINARY"], "-in", deck, "-log", log, "-screen", "none"]
+    for name, value in variables:
+        command += ["-var", name, str(value)]
+    result = run(command, workdir, deck)
+    text = ""
+    path = os.path.join(workdir, log)
+    if os.path.exists(path):
+        with open(path, encoding="utf-8", errors="replace") as f:
+            text = f.read()
+    return result.returncode, text + result.stdout + result.stderr
+
+
+def thermo_rows(log_text):
+    """The numeric rows of every thermo block: lists of strings."""
+    rows = []
+    inside = False
+    for line in log_text.splitlines():
+        fields = line.split()
+        if fields and fields[0] == "Step":
+            inside = True
+            continue
+        if inside:
+            if not fields or not fields[0].lstrip("-").isdigit():
+                inside = False
+                continue
+            rows.append(fields)
+    return rows
+
+
+def error_line(log_text):
+    for line in log_text.splitlines():
+        if "ERROR" in line:
+            return line.strip()
+    return None

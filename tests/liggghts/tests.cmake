@@ -1,0 +1,43 @@
+# The LIGGGHTS binding's tests (lammps_pair/liggghts/), included by tests/CMakeLists.txt
+# when CAPBRIDGE_LIGGGHTS_ENV names the liggghts.env written by scripts/build_liggghts.sh
+# (which builds LIGGGHTS 3.8.0 with `cohesion capillary` and the C core). Label: liggghts.
+# Python 3 (standard library) drives LIGGGHTS and compares with the capbridge CLI.
+if(NOT EXISTS "${CAPBRIDGE_LIGGGHTS_ENV}")
+  message(FATAL_ERROR "CAPBRIDGE_LIGGGHTS_ENV=${CAPBRIDGE_LIGGGHTS_ENV} does not exist: "
+                      "run scripts/build_liggghts.sh (it prints the path)")
+endif()
+find_package(Python3 REQUIRED COMPONENTS Interpreter)
+set(_liggghts_dir ${CMAKE_CURRENT_LIST_DIR})
+set(_liggghts_work ${CMAKE_CURRENT_BINARY_DIR}/liggghts)
+
+# the 13 Gladkyy cases (+ 2 with contact), every step against `capbridge pulloff`
+add_test(NAME liggghts_pulloff
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/pulloff.py
+                 $<TARGET_FILE:capbridge_cli> ${CAPBRIDGE_LIGGGHTS_ENV}
+                 --workdir ${_liggghts_work}/pulloff)
+# the same with one sphere per rank (the bridge held by both ranks)
+add_test(NAME liggghts_pulloff_mpi
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/pulloff.py
+                 $<TARGET_FILE:capbridge_cli> ${CAPBRIDGE_LIGGGHTS_ENV} --ranks 2
+                 --cases W21,W22,R1 --workdir ${_liggghts_work}/pulloff_mpi)
+# Protocol 2: liquid conserved on 1 and 2 ranks, the same bridges on both
+add_test(NAME liggghts_wet
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/wet.py ${CAPBRIDGE_LIGGGHTS_ENV}
+                 --workdir ${_liggghts_work}/wet)
+# bad input: an error naming the problem; walls are dry
+add_test(NAME liggghts_bad_input
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/bad_input.py ${CAPBRIDGE_LIGGGHTS_ENV}
+                 --workdir ${_liggghts_work}/bad_input)
+# the Coulomb limit with and without the capillary attraction (Richefeu eq. 12)
+add_test(NAME liggghts_friction
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/friction.py ${CAPBRIDGE_LIGGGHTS_ENV}
+                 --workdir ${_liggghts_work}/friction)
+# easo/capillary/viscous and ours against the exact curves; easo = our soulie at theta 0
+# (the full table of the docs: easo_comparison.py with all laws, see its --output)
+add_test(NAME liggghts_easo_comparison
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/easo_comparison.py
+                 ${CAPBRIDGE_LIGGGHTS_ENV} --laws soulie,willett --check
+                 --workdir ${_liggghts_work}/easo)
+set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts_bad_input
+                     liggghts_friction liggghts_easo_comparison
+                     PROPERTIES LABELS "liggghts" TIMEOUT 600)
