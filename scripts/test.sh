@@ -1,14 +1,21 @@
 #!/usr/bin/env bash
-# Runs every capbridge test: the C core, CLI and reference-data tests (gcc, -Werror),
-# then the C tests again under AddressSanitizer + UndefinedBehaviorSanitizer (clang),
-# with the libFuzzer target over the force API for a bounded time.
+# Runs every capbridge test: the C core, CLI and reference-data tests (gcc, -Werror), the
+# LAMMPS plugin and LIGGGHTS model tests against engines built once into the cache outside the
+# repository (scripts/build_lammps.sh, scripts/build_liggghts.sh: a cached build is reused),
+# then the C tests again under AddressSanitizer + UndefinedBehaviorSanitizer (clang), with the
+# libFuzzer target over the force API for a bounded time.
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 cd "$top"
 scripts/setup_deps.sh
 jobs=$(nproc)
+cache=${CAPBRIDGE_CACHE:-$HOME/.cache/capbridge}
+scripts/build_lammps.sh >/dev/null
+scripts/build_liggghts.sh >/dev/null
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release \
+  -DCAPBRIDGE_LAMMPS_ENV="$cache/lammps-20250204/lammps.env" \
+  -DCAPBRIDGE_LIGGGHTS_ENV="$cache/liggghts-3.8.0/liggghts.env" >/dev/null
 cmake --build build -j "$jobs"
 
 CC=clang cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DCAPBRIDGE_SANITIZE=ON \
