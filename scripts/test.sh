@@ -7,16 +7,8 @@
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 cd "$top"
-scripts/setup_deps.sh
+scripts/configure.sh
 jobs=$(nproc)
-cache=${CAPBRIDGE_CACHE:-$HOME/.cache/capbridge}
-scripts/build_lammps.sh >/dev/null
-scripts/build_liggghts.sh >/dev/null
-
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release \
-  -DCAPBRIDGE_LAMMPS_ENV="$cache/lammps-20250204/lammps.env" \
-  -DCAPBRIDGE_LIGGGHTS_ENV="$cache/liggghts-3.8.0/liggghts.env" >/dev/null
-cmake --build build -j "$jobs"
 
 CC=clang cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DCAPBRIDGE_SANITIZE=ON \
   -DCAPBRIDGE_FUZZ=ON >/dev/null

@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# Runs one scene deck in LAMMPS or LIGGGHTS under MPI.
+#
+# Usage: scripts/scene.sh ENGINE SCENE [-np N] [-size smoke|default|paper] [-out DIR]
+#                         [-var NAME VALUE ...]
+#   ENGINE  lammps or liggghts
+#   SCENE   a directory of inputs/ (direct_shear, uniaxial, split_bottom)
+#   -np     MPI ranks (default 2)
+#   -size   the deck's size (default: default)
+#   -out    output directory, created if needed (default out/SCENE/ENGINE-SIZE)
+#   -var    passed on to the deck (any number)
+# The deck is inputs/SCENE/in.ENGINE. It runs in the output directory and gets the variables
+# size, inputs (the scene directory), and for LAMMPS plugin (the capbridge plugin).
+# Set CAPBRIDGE_SKIP_CONFIGURE=1 when build/ is known to be current (the tests do).
+set -euo pipefail
+top=$(cd "$(dirname "$0")/.." && pwd)
+usage() { sed -n '4,14p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
+[ $# -ge 2 ] || usage
+engine=$1 scene=$2
+shift 2
+case $engine in lammps|liggghts) ;; *) echo "scene.sh: unknown engine '$engine' (allowed: lammps, liggghts)" >&2; exit 2 ;; esac
+deck="$top/inputs/$scene/in.$engine"
+[ -f "$deck" ] || { echo "scene.sh: no deck $deck (scenes: $(ls "$top/inputs" | tr '\n' ' '))" >&2; exit 2; }
+np=2 size=default out="" vars=()
+while [ $# -gt 0 ]; do
+  case $1 in
+    -np) np=${2:?-np needs a number}; shift 2 ;;
+    -size) size=${2:?-size needs smoke, default or paper}; shift 2 ;;
+    -out) out=${2:?-out needs a directory}; shift 2 ;;
+    -var) vars+=(-var "${2:?-var needs NAME VALUE}" "${3:?-var $2 needs a value}"); shift 3 ;;
+    *) echo "scene.sh: unknown option '$1'" >&2; usage ;;
+  esac
+done
+case $size in smoke|default|paper) ;; *) echo "scene.sh: unknown size '$size' (allowed: smoke, default, paper)" >&2; exit 2 ;; esac
+case $np in ''|*[!0-9]*|0) echo "scene.sh: -np must be a positive integer, not '$np'" >&2; exit 2 ;; esac
+[ -n "$out" ] || out="$top/out/$scene/$engine-$size"
+[ "${CAPBRIDGE_SKIP_CONFIGURE:-0}" = 1 ] || "$top/scripts/configure.sh"
+cache=${CAPBRIDGE_CACHE:-$HOME/.cache/capbridge}
+if [ "$engine" = lammps ]; then
+  envfile="$cache/lammps-20250204/lammps.env"
+else
+  envfile="$cache/liggghts-3.8.0/liggghts.env"
+fi
+set -a
+# shellcheck disable=SC1090
+. "$envfile"
+set +a
+# Open MPI inside containers: allow root, do not bind oversubscribed ranks
+export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_hwloc_base_binding_policy=none
+mkdir -p "$out"
+cd "$out"
+if [ "$engine" = lammps ]; then
+  plugin=${CAPBRIDGE_PLUGIN:-$top/build/lammps_pair/lammps/capbridgeplugin.so}
+  [ -f "$plugin" ] || { echo "scene.sh: no plugin $plugin (run scripts/configure.sh)" >&2; exit 2; }
+  # shellcheck disable=SC2086 # LAMMPS_MPIRUN is a command with options
+  exec ${LAMMPS_MPIRUN:-mpirun} -np "$np" "$LAMMPS_BINARY" -in "$deck" -log log.lammps \
+    -nocite -var size "$size" -var inputs "$top/inputs/$scene" -var plugin "$plugin" \
+    "${vars[@]+"${vars[@]}"}" </dev/null
+else
+  # shellcheck disable=SC2086
+  exec ${LIGGGHTS_MPIRUN:-mpirun} -np "$np" "$LIGGGHTS_BINARY" -in "$deck" -log log.liggghts \
+    -var size "$size" -var inputs "$top/inputs/$scene" "${vars[@]+"${vars[@]}"}" </dev/null
+fi
