@@ -1,0 +1,240 @@
+#!/usr/bin/python3
+"""Post-processing of the direct shear runs (Richefeu 2007 section 3.2, Figs. 5-7).
+
+Usage: /usr/bin/python3 inputs/direct_shear/post.py RUN_DIR [RUN_DIR ...] --out DIR
+
+Every RUN_DIR (or any directory below it) holding a shear.txt written by in.lammps or in.liggghts
+is one run; its first line gives the parameters (engine, size, sigma, w, protocol, bonds, law).
+Writes into DIR:
+  runs.csv          one line per run: the shear strength (the plateau mean of tau, see below),
+                    the peak of tau, the normal stress on the shear plane, bonds, liquid check
+  mohr_coulomb.csv  per engine, protocol, bonds and w with at least two stresses: the fit
+                    tau = sigma_n tan(phi) + c (least squares)
+  curves_*.png      tau against dx/<D> (Fig. 5), one file per engine and protocol
+  yield_loci.png    tau against sigma_n with the fitted lines (Fig. 6a)
+  cohesion.png      c against w (Fig. 6b), with the paper's saturation c_m = 120 Pa (simulation)
+                    and 150 Pa (experiment, 1 mm glass beads)
+  half_bonds.png    tau and the bond coordination against dx/<D> for bonds all / half at the
+                    same sigma and w (Fig. 7), when such runs are present
+Shear strength: the paper finds no peak (Fig. 5: the residual state is reached after about one
+<D>), so the strength is the mean of tau over the plateau, dx >= min(1, dx_max/2) <D>; the peak
+(the largest tau) is reported next to it.
+"""
+import argparse
+import csv
+import math
+import os
+import sys
+
+import numpy as np
+
+COLUMNS = ["step", "dx_m", "dx_over_D", "tau_Pa", "sigma_plate_Pa", "sigma_n_Pa", "phi",
+           "bridges", "z_bond", "liquid_m3", "liquid_rel_change", "ke_J"]
+PAPER_CM_SIM = 120.0   # Pa, Richefeu 2007 section 3.2.2 (simulations, saturation)
+PAPER_CM_EXP = 150.0   # Pa, Richefeu 2007 Table I / Fig. 4 (experiment, 1 mm glass beads)
+
+
+def fail(message):
+    sys.exit(f"post.py: {message}")
+
+
+def read_run(path):
+    with open(path) as f:
+        lines = f.readlines()
+    if not lines or not lines[0].startswith("# engine"):
+        fail(f"{path}: the first line should be the parameter line '# engine ...'")
+    words = lines[0][1:].split()
+    params = dict(zip(words[0::2], words[1::2]))
+    for key in ("engine", "size", "sigma", "w", "protocol", "bonds", "law", "Dmean"):
+        if key not in params:
+            fail(f"{path}: no '{key}' in the parameter line")
+    rows = [line.split() for line in lines if line.strip() and not line.startswith("#")]
+    if len(rows) < 3:
+        fail(f"{path}: fewer than 3 output lines (did the run finish?)")
+    data = np.array([[float(v) for v in row] for row in rows])
+    if data.shape[1] != len(COLUMNS):
+        fail(f"{path}: {data.shape[1]} columns, expected {len(COLUMNS)}")
+    return params, {name: data[:, i] for i, name in enumerate(COLUMNS)}
+
+
+def strength(d):
+    """Plateau mean and standard deviation of tau, peak of tau, mean sigma_n on the plateau."""
+    x = d["dx_over_D"]
+    start = min(1.0, x[-1] / 2)
+    on = x >= start
+    return dict(plateau_from=start, tau=float(d["tau_Pa"][on].mean()),
+                tau_std=float(d["tau_Pa"][on].std()), tau_peak=float(d["tau_Pa"].max()),
+                sigma_n=float(d["sigma_n_Pa"][on].mean()),
+                sigma_plate=float(d["sigma_plate_Pa"][on].mean()))
+
+
+def find_runs(roots):
+    runs = []
+    for root in roots:
+        if not os.path.isdir(root):
+            fail(f"no directory {root}")
+        for here, _, files in os.walk(root):
+            if "shear.txt" in files:
+                path = os.path.join(here, "shear.txt")
+                params, data = read_run(path)
+                runs.append((path, params, data))
+    if not runs:
+        fail(f"no shear.txt under {' '.join(roots)}")
+    return runs
+
+
+def key_of(p):
+    return (p["engine"], p["protocol"], p["bonds"])
+
+
+def write_runs(runs, out):
+    rows = []
+    for path, p, d in runs:
+        s = strength(d)
+        rows.append(dict(engine=p["engine"], size=p["size"], protocol=p["protocol"], bonds=p["bonds"],
+                         law=p["law"], sigma_Pa=float(p["sigma"]), w_percent=float(p["w"]),
+                         sigma_n_Pa=s["sigma_n"], sigma_plate_Pa=s["sigma_plate"],
+                         tau_plateau_Pa=s["tau"], tau_plateau_std_Pa=s["tau_std"],
+                         tau_peak_Pa=s["tau_peak"], plateau_from_D=s["plateau_from"],
+                         dx_end_D=float(d["dx_over_D"][-1]), phi_end=float(d["phi"][-1]),
+                         z_bond_start=float(d["z_bond"][0]), z_bond_end=float(d["z_bond"][-1]),
+                         liquid_max_abs_rel_change=float(np.abs(d["liquid_rel_change"]).max()),
+                         run=os.path.dirname(path)))
+    rows.sort(key=lambda r: (r["engine"], r["protocol"], r["bonds"], r["w_percent"], r["sigma_Pa"]))
+    with open(os.path.join(out, "runs.csv"), "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+        writer.writeheader()
+        for r in rows:
+            writer.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in r.items()})
+    return rows
+
+
+def fit_mohr_coulomb(rows, out):
+    groups = {}
+    for r in rows:
+        groups.setdefault((r["engine"], r["protocol"], r["bonds"], r["w_percent"]), []).append(r)
+    fits = []
+    for (engine, protocol, bonds, w), rs in sorted(groups.items()):
+        if len({r["sigma_Pa"] for r in rs}) < 2:
+            continue
+        s = np.array([r["sigma_n_Pa"] for r in rs])
+        t = np.array([r["tau_plateau_Pa"] for r in rs])
+        slope, c = np.polyfit(s, t, 1)
+        fits.append(dict(engine=engine, protocol=protocol, bonds=bonds, w_percent=w,
+                         n_stresses=len(rs), tan_phi=slope, phi_deg=math.degrees(math.atan(slope)),
+                         c_Pa=c))
+    with open(os.path.join(out, "mohr_coulomb.csv"), "w", newline="") as f:
+        names = ["engine", "protocol", "bonds", "w_percent", "n_stresses", "tan_phi", "phi_deg", "c_Pa"]
+        writer = csv.DictWriter(f, fieldnames=names)
+        writer.writeheader()
+        for r in fits:
+            writer.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in r.items()})
+    return fits
+
+
+def plots(runs, rows, fits, out):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    # Fig. 5: tau(dx/<D>), one file per engine/protocol/bonds, one panel per sigma
+    for key in sorted({key_of(p) for _, p, _ in runs}):
+        sel = [(p, d) for _, p, d in runs if key_of(p) == key]
+        sigmas = sorted({float(p["sigma"]) for p, _ in sel})
+        fig, axes = plt.subplots(1, len(sigmas), figsize=(4.5 * len(sigmas), 3.6), squeeze=False)
+        for ax, sigma in zip(axes[0], sigmas):
+            for p, d in sorted((pd for pd in sel if float(pd[0]["sigma"]) == sigma),
+                               key=lambda pd: float(pd[0]["w"])):
+                ax.plot(d["dx_over_D"], d["tau_Pa"], lw=1, label=f"w = {p['w']} %")
+            ax.set_title(f"sigma = {sigma:g} Pa")
+            ax.set_xlabel("dx / <D>")
+            ax.set_ylabel("tau [Pa]")
+            ax.legend(fontsize=8)
+        engine, protocol, bonds = key
+        fig.suptitle(f"direct shear, {engine}, protocol {protocol}, bonds {bonds} (size {sel[0][0]['size']})")
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, f"curves_{engine}_{protocol}_{bonds}.png"), dpi=110)
+        plt.close(fig)
+
+    if fits:
+        # Fig. 6a: yield loci
+        fig, ax = plt.subplots(figsize=(5.5, 4.2))
+        for f in fits:
+            rs = [r for r in rows if (r["engine"], r["protocol"], r["bonds"], r["w_percent"]) ==
+                  (f["engine"], f["protocol"], f["bonds"], f["w_percent"])]
+            s = np.array([r["sigma_n_Pa"] for r in rs])
+            label = f"{f['engine']} {f['protocol']} {f['bonds']} w={f['w_percent']:g}%"
+            line = ax.plot(s, [r["tau_plateau_Pa"] for r in rs], "o")[0]
+            xs = np.linspace(0, s.max() * 1.05, 20)
+            ax.plot(xs, f["tan_phi"] * xs + f["c_Pa"], "-", color=line.get_color(), label=label)
+        ax.set_xlabel("sigma_n [Pa]")
+        ax.set_ylabel("tau (plateau) [Pa]")
+        ax.set_title("yield loci (Richefeu Fig. 6a)")
+        ax.legend(fontsize=7)
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, "yield_loci.png"), dpi=110)
+        plt.close(fig)
+
+        # Fig. 6b: c(w)
+        fig, ax = plt.subplots(figsize=(5.5, 4.2))
+        for key in sorted({(f["engine"], f["protocol"], f["bonds"]) for f in fits}):
+            fs = sorted((f for f in fits if (f["engine"], f["protocol"], f["bonds"]) == key),
+                        key=lambda f: f["w_percent"])
+            ax.plot([f["w_percent"] for f in fs], [f["c_Pa"] for f in fs], "o-", label=" ".join(key))
+        ax.axhline(PAPER_CM_SIM, color="k", ls="--", lw=1, label="paper, simulation c_m")
+        ax.axhline(PAPER_CM_EXP, color="gray", ls=":", lw=1, label="paper, experiment 1 mm beads")
+        ax.set_xlabel("w [%]")
+        ax.set_ylabel("c [Pa]")
+        ax.set_title("Coulomb cohesion (Richefeu Fig. 6b)")
+        ax.legend(fontsize=7)
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, "cohesion.png"), dpi=110)
+        plt.close(fig)
+
+    # Fig. 7: half bonds against all bonds (and dry) at the same sigma and w
+    halves = [(p, d) for _, p, d in runs if p["bonds"] == "half"]
+    if halves:
+        fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 3.8))
+        for ph, dh in halves:
+            same = [(p, d) for _, p, d in runs if p["engine"] == ph["engine"] and
+                    p["sigma"] == ph["sigma"] and (p["w"] == ph["w"] or float(p["w"]) == 0) and
+                    p["bonds"] == "all" and (p["protocol"] == ph["protocol"] or float(p["w"]) == 0)]
+            for p, d in same + [(ph, dh)]:
+                label = f"{p['engine']} w={p['w']}% bonds {p['bonds']}"
+                ax1.plot(d["dx_over_D"], d["tau_Pa"], lw=1, label=label)
+                if float(p["w"]) > 0:
+                    ax2.plot(d["dx_over_D"], d["z_bond"], lw=1, label=label)
+        ax1.set_xlabel("dx / <D>")
+        ax1.set_ylabel("tau [Pa]")
+        ax1.legend(fontsize=7)
+        ax1.set_title("half bonds (Richefeu Fig. 7)")
+        ax2.set_xlabel("dx / <D>")
+        ax2.set_ylabel("bond coordination z")
+        ax2.legend(fontsize=7)
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, "half_bonds.png"), dpi=110)
+        plt.close(fig)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("runs", nargs="+", help="run directories (searched recursively for shear.txt)")
+    parser.add_argument("--out", required=True, help="output directory for CSV and PNG")
+    args = parser.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    runs = find_runs(args.runs)
+    rows = write_runs(runs, args.out)
+    fits = fit_mohr_coulomb(rows, args.out)
+    plots(runs, rows, fits, args.out)
+    for r in rows:
+        print(f"{r['engine']:8s} p{r['protocol']:9s} {r['bonds']:4s} sigma {r['sigma_Pa']:5g} Pa "
+              f"w {r['w_percent']:4g} %: tau {r['tau_plateau_Pa']:7.1f} +- {r['tau_plateau_std_Pa']:5.1f} Pa "
+              f"(peak {r['tau_peak_Pa']:6.1f}) sigma_n {r['sigma_n_Pa']:6.1f} Pa z_bond "
+              f"{r['z_bond_start']:.2f} -> {r['z_bond_end']:.2f}")
+    for f in fits:
+        print(f"fit {f['engine']} {f['protocol']} {f['bonds']} w {f['w_percent']:g} %: "
+              f"tan(phi) {f['tan_phi']:.3f} (phi {f['phi_deg']:.1f} deg), c {f['c_Pa']:.1f} Pa")
+
+
+if __name__ == "__main__":
+    main()
