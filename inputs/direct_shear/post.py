@@ -48,6 +48,8 @@ def read_run(path):
     for key in ("engine", "size", "sigma", "w", "protocol", "bonds", "law", "Dmean"):
         if key not in params:
             fail(f"{path}: no '{key}' in the parameter line")
+    if float(params["w"]) == 0:
+        params["protocol"] = "dry"   # no liquid: the protocol does not matter
     rows = [line.split() for line in lines if line.strip() and not line.startswith("#")]
     if len(rows) < 3:
         fail(f"{path}: fewer than 3 output lines (did the run finish?)")
@@ -177,8 +179,9 @@ def plots(runs, rows, fits, out):
 
         # Fig. 6b: c(w)
         fig, ax = plt.subplots(figsize=(5.5, 4.2))
-        for key in sorted({(f["engine"], f["protocol"], f["bonds"]) for f in fits}):
-            fs = sorted((f for f in fits if (f["engine"], f["protocol"], f["bonds"]) == key),
+        for key in sorted({(f["engine"], f["protocol"], f["bonds"]) for f in fits if f["protocol"] != "dry"}):
+            dry = [f for f in fits if f["engine"] == key[0] and f["protocol"] == "dry"]
+            fs = sorted(dry + [f for f in fits if (f["engine"], f["protocol"], f["bonds"]) == key],
                         key=lambda f: f["w_percent"])
             ax.plot([f["w_percent"] for f in fs], [f["c_Pa"] for f in fs], "o-", label=" ".join(key))
         ax.axhline(PAPER_CM_SIM, color="k", ls="--", lw=1, label="paper, simulation c_m")

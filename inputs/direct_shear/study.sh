@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# The direct shear study of Richefeu 2007 section 3.2 (Figs. 5-7): runs the matrix through
+# scripts/scene.sh, then post.py; copies the CSV and PNG into docs/results/direct_shear/.
+#
+# Usage: inputs/direct_shear/study.sh [-size smoke|default|paper] [-np N] [-engines "lammps liggghts"]
+#                                     [-sigmas "200 500 800"] [-ws "0 0.1 0.5 1 2"] [-nohalf] [-nocopy]
+#   the full matrix at default size (the command the results page refers to):
+#     CAPBRIDGE_SKIP_CONFIGURE=1 inputs/direct_shear/study.sh -size default
+#   LAMMPS: Protocols 1 and 2 for every wet w; LIGGGHTS: protocol2 (it has no Protocol 1);
+#   dry runs once per engine and sigma; the half-bonds variant (Fig. 7): LAMMPS, Protocol 2,
+#   w = 1 %, the middle sigma, next to its all-bonds run.
+# Outputs: out/direct_shear/study-SIZE/<engine>-p<protocol>-<bonds>-s<sigma>-w<w>/ (one run each),
+#   out/direct_shear/study-SIZE/post/ (post.py), copied to docs/results/direct_shear/ (-nocopy: not).
+# Environment: CAPBRIDGE_LOCK=FILE runs every engine under `flock FILE` (one heavy run at a time on a
+#   shared machine); CAPBRIDGE_SKIP_CONFIGURE, CAPBRIDGE_PLUGIN are passed on to scripts/scene.sh.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+top=$(cd "$here/../.." && pwd)
+size=default np=2 engines="lammps liggghts" sigmas="200 500 800" ws="0 0.1 0.5 1 2" half=1 copy=1
+while [ $# -gt 0 ]; do
+  case $1 in
+    -size) size=$2; shift 2 ;;
+    -np) np=$2; shift 2 ;;
+    -engines) engines=$2; shift 2 ;;
+    -sigmas) sigmas=$2; shift 2 ;;
+    -ws) ws=$2; shift 2 ;;
+    -nohalf) half=0; shift ;;
+    -nocopy) copy=0; shift ;;
+    *) sed -n '2,17p' "$0" >&2; exit 2 ;;
+  esac
+done
+study="$top/out/direct_shear/study-$size"
+mkdir -p "$study"
+# ranks waiting in MPI give the core to the other rank (the machine may be shared)
+export OMPI_MCA_mpi_yield_when_idle=${OMPI_MCA_mpi_yield_when_idle:-1}
+
+one() {  # one ENGINE NAME -var ...: one run unless its shear.txt is complete
+  local engine=$1 name=$2
+  shift 2
+  local out="$study/$name"
+  if [ -f "$out/shear.txt" ] && grep -q "direct_shear: done" "$out"/log.* 2>/dev/null; then
+    echo "study: $name done before, kept"
+    return
+  fi
+  echo "study: $name ($(date -u +%H:%M:%S))"
+  local lock=()
+  [ -n "${CAPBRIDGE_LOCK:-}" ] && lock=(flock "$CAPBRIDGE_LOCK")
+  local t0=$SECONDS
+  "${lock[@]}" "$top/scripts/scene.sh" "$engine" direct_shear -np "$np" -size "$size" -out "$out" "$@" \
+    > "$out.screen" 2>&1 || { echo "study: $name failed, see $out.screen" >&2; exit 1; }
+  echo "study: $name took $((SECONDS - t0)) s"
+}
+
+mid=$(echo "$sigmas" | awk '{print $(int((NF + 1) / 2))}')
+for engine in $engines; do
+  if [ "$engine" = lammps ]; then protocols="1 2"; else protocols="protocol2"; fi
+  for sigma in $sigmas; do
+    for w in $ws; do
+      if [ "$w" = 0 ]; then
+        one "$engine" "$engine-dry-all-s$sigma-w0" -var sigma "$sigma" -var w 0
+        continue
+      fi
+      for p in $protocols; do
+        if [ "$engine" = lammps ]; then pvar=(-var protocol "$p"); else pvar=(-var liquid "$p"); fi
+        one "$engine" "$engine-p$p-all-s$sigma-w$w" -var sigma "$sigma" -var w "$w" "${pvar[@]}"
+      done
+    done
+  done
+  if [ "$engine" = lammps ] && [ "$half" = 1 ]; then
+    one lammps "lammps-p2-all-s$mid-w1" -var sigma "$mid" -var w 1 -var protocol 2
+    one lammps "lammps-p2-half-s$mid-w1" -var sigma "$mid" -var w 1 -var protocol 2 -var bonds half
+  fi
+done
+
+mkdir -p "$study/post"
+/usr/bin/python3 "$here/post.py" "$study" --out "$study/post" | tee "$study/post/summary.txt"
+if [ "$copy" = 1 ]; then
+  dest="$top/docs/results/direct_shear"
+  mkdir -p "$dest"
+  cp "$study"/post/*.csv "$study"/post/*.png "$study/post/summary.txt" "$dest/"
+  echo "study: copied to $dest"
+fi

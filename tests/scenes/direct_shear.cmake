@@ -1,0 +1,18 @@
+# Smoke tests of the direct shear scene (inputs/direct_shear/, Richefeu 2007 section 3.2),
+# included by tests/CMakeLists.txt when both engine env files are set.  Each test runs the
+# smoke decks on 2 ranks through scripts/scene.sh and asserts physics (direct_shear_smoke.py):
+# wet stronger than dry, the servo's vertical stress, liquid conserved to 1e-12, the bonds.
+# About 2 minutes (LAMMPS 4 runs) and 1 minute (LIGGGHTS 2 runs) on 2 free cores.
+find_package(Python3 REQUIRED COMPONENTS Interpreter)
+set(_ds_env CAPBRIDGE_SKIP_CONFIGURE=1
+            CAPBRIDGE_PLUGIN=$<TARGET_FILE:capbridgeplugin>
+            # ranks waiting in MPI give the core to the other rank (the machine may be shared)
+            OMPI_MCA_mpi_yield_when_idle=1)
+foreach(_ds_engine lammps liggghts)
+  add_test(NAME direct_shear_${_ds_engine}
+           COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/direct_shear_smoke.py
+                   ${_ds_engine} ${PROJECT_SOURCE_DIR}/scripts/scene.sh
+                   ${CMAKE_CURRENT_BINARY_DIR}/scenes/direct_shear/${_ds_engine})
+  set_tests_properties(direct_shear_${_ds_engine} PROPERTIES
+                       LABELS "scenes" TIMEOUT 600 PROCESSORS 2 ENVIRONMENT "${_ds_env}")
+endforeach()
