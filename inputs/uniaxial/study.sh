@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# The runs of docs/results/uniaxial.md: uniaxial compression (Richefeu 2007 section 4.2) for
+# w = 2, 4, 6 % under every liquid protocol each engine has (LAMMPS: Protocols 1, 2, 3;
+# LIGGGHTS: fixed volume and Protocol 2 -- it has no Protocol 1 or 3), half of the bridges removed
+# (LAMMPS, w = 2 and 4 %, Protocol 1; LIGGGHTS, fixed volume), and dry; then post.py.
+# Usage: inputs/uniaxial/study.sh [smoke|default|paper] [lammps] [liggghts]
+#   (default: smoke, both engines). Writes out/uniaxial/study-SIZE/ and copies the CSV and PNG
+#   files to docs/results/uniaxial/ (SIZE in their names). Every run holds /tmp/eng/heavy.lock
+#   when that directory exists (machines shared by several jobs), and is skipped when its
+#   uniaxial.txt is complete already (delete the run directory to redo it).
+set -euo pipefail
+top=$(cd "$(dirname "$0")/../.." && pwd)
+size=${1:-smoke}
+shift || true
+engines=("$@")
+[ ${#engines[@]} -gt 0 ] || engines=(lammps liggghts)
+case $size in smoke|default|paper) ;; *) echo "study.sh: size must be smoke, default or paper" >&2; exit 2 ;; esac
+out=$top/out/uniaxial/study-$size
+mkdir -p "$out"
+runs=()
+one() {  # one ENGINE NAME -var ... : runs a case unless it finished before
+  local engine=$1 name=$2; shift 2
+  local dir=$out/$engine-$name
+  runs+=("$dir")
+  if [ -f "$dir/end.dump" ]; then return; fi
+  echo "study.sh: $engine $name" >&2
+  local lock=()
+  [ -d /tmp/eng ] && lock=(flock /tmp/eng/heavy.lock)
+  "${lock[@]}" "$top/scripts/scene.sh" "$engine" uniaxial -np 2 -size "$size" -out "$dir" "$@" >"$dir.screen" 2>&1 \
+    || { echo "study.sh: $engine $name failed, see $dir.screen" >&2; exit 1; }
+}
+for engine in "${engines[@]}"; do
+  case $engine in
+    lammps) protocols=(protocol1 protocol2 protocol3) half=protocol1 ;;
+    liggghts) protocols=(fixed protocol2) half=fixed ;;
+    *) echo "study.sh: unknown engine $engine" >&2; exit 2 ;;
+  esac
+  for w in 0.02 0.04 0.06; do
+    for p in "${protocols[@]}"; do one "$engine" "$p-w$w" -var protocol "$p" -var w "$w"; done
+  done
+  for w in 0.02 0.04; do one "$engine" "$half-half-w$w" -var protocol "$half" -var w "$w" -var half yes; done
+  one "$engine" dry -var dry yes
+done
+/usr/bin/python3 "$top/inputs/uniaxial/post.py" "$out" "${runs[@]}" | tee "$out/strength.txt"
+dest=$top/docs/results/uniaxial
+mkdir -p "$dest"
+for f in curves.csv strength.csv stress.png strength.png snapshot.png strength.txt; do
+  [ -f "$out/$f" ] && cp "$out/$f" "$dest/${f%.*}-$size.${f##*.}"
+done
+echo "study.sh: wrote $out and $dest"
