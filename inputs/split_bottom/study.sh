@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# The split-bottom study (Gladkyy 2014 §4.1, Figs. 6-8): dry, then every law at both bridge
+# volumes, in one or both engines; then post.py over all runs, and the CSV + PNG copied to
+# docs/results/split_bottom/ (with -publish).
+#
+# Usage: inputs/split_bottom/study.sh [-size smoke|default|paper] [-engines "lammps liggghts"]
+#                                     [-laws "weigert willett ..."] [-volumes "13.6 74.2"]
+#                                     [-np N] [-publish]
+#   defaults: -size default, both engines, Gladkyy's four laws (weigert willett
+#   willett/reduced rabinovich) and the other four of capbridge (richefeu
+#   rabinovich/uncorrected soulie table), volumes 13.6 and 74.2 nl, -np 2.
+#   The full matrix at default size is 2 engines x 17 runs x ~12 min: about 7 h on 2 cores.
+# Every run holds a lock file ($CAPBRIDGE_HEAVY_LOCK, default /tmp/capbridge-heavy.lock)
+# with flock, so that heavy runs started by several people do not share the cores.
+# Runs go to out/split_bottom/study-SIZE/ENGINE-LAW-VOLUME/ (an existing run with a snapshot
+# and a finished log is kept: delete it to run again); post.py writes out/split_bottom/study-SIZE/post/.
+set -euo pipefail
+top=$(cd "$(dirname "$0")/../.." && pwd)
+size=default engines="lammps liggghts" np=2 publish=0
+laws="weigert willett willett/reduced rabinovich richefeu rabinovich/uncorrected soulie table"
+volumes="13.6 74.2"
+while [ $# -gt 0 ]; do
+  case $1 in
+    -size) size=$2; shift 2 ;;
+    -engines) engines=$2; shift 2 ;;
+    -laws) laws=$2; shift 2 ;;
+    -volumes) volumes=$2; shift 2 ;;
+    -np) np=$2; shift 2 ;;
+    -publish) publish=1; shift ;;
+    *) sed -n '6,13p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2 ;;
+  esac
+done
+lock=${CAPBRIDGE_HEAVY_LOCK:-/tmp/capbridge-heavy.lock}
+study=$top/out/split_bottom/study-$size
+mkdir -p "$study"
+runs=()
+one() {  # engine law volume
+  local name="$1-${2//\//_}-$3"
+  [ "$3" != 0 ] || name="$1-dry"
+  local out="$study/$name"
+  runs+=("$out")
+  if [ -f "$out/torque.txt" ] && grep -q "^Total wall time" "$out"/log.* 2>/dev/null; then
+    echo "study: $name done before, kept"
+    return
+  fi
+  echo "study: $name ($(date -u +%H:%M:%S))"
+  local t0=$SECONDS
+  CAPBRIDGE_SKIP_CONFIGURE=${CAPBRIDGE_SKIP_CONFIGURE:-1} flock "$lock" \
+    "$top/scripts/scene.sh" "$1" split_bottom -np "$np" -size "$size" -out "$out" \
+    -var law "$2" -var volume "$3" > "$study/$name.out" 2>&1
+  echo "study: $name took $((SECONDS - t0)) s"
+}
+for engine in $engines; do
+  one "$engine" willett 0
+  for volume in $volumes; do
+    for law in $laws; do
+      one "$engine" "$law" "$volume"
+    done
+  done
+done
+/usr/bin/python3 "$top/inputs/split_bottom/post.py" "${runs[@]}" --out "$study/post"
+if [ "$publish" = 1 ]; then
+  dest=$top/docs/results/split_bottom
+  mkdir -p "$dest"
+  cp "$study/post/summary.csv" "$study/post/"*.png "$dest/"
+  cp "$study/post/"*_band.csv "$dest/"
+  echo "study: copied summary.csv, *_band.csv and the plots to $dest"
+fi
