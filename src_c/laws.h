@@ -15,7 +15,7 @@
  * by both its rupture distance and its force. */
 typedef struct cb_table_position {
     int ratio_first, volume_first; /* first nodes of the 4-point stencils */
-    double ratio_weight[4], volume_weight[4]; /* the stencils' weights */
+    double weight[4][4];           /* ratio weight times volume weight, per stencil node */
     double scaled_rupture;         /* rupture / R_h, interpolated */
 } cb_table_position;
 
