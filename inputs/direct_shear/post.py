@@ -9,7 +9,8 @@ Writes into DIR:
   runs.csv          one line per run: the shear strength (the plateau mean of tau, see below),
                     the peak of tau, the normal stress on the shear plane, bonds, liquid check
   mohr_coulomb.csv  per engine, protocol, bonds and w with at least two stresses: the fit
-                    tau = sigma_n tan(phi) + c (least squares)
+                    tau = sigma_n tan(phi) + c (least squares), and c_dry_phi, the cohesion with
+                    the friction of the dry fit (the paper's Coulomb lines are parallel)
   curves_*.png      tau against dx/<D> (Fig. 5), one file per engine and protocol
   yield_loci.png    tau against sigma_n with the fitted lines (Fig. 6a)
   cohesion.png      c against w (Fig. 6b), with the paper's saturation c_m = 120 Pa (simulation)
@@ -125,13 +126,26 @@ def fit_mohr_coulomb(rows, out):
         fits.append(dict(engine=engine, protocol=protocol, bonds=bonds, w_percent=w,
                          n_stresses=len(rs), tan_phi=slope, phi_deg=math.degrees(math.atan(slope)),
                          c_Pa=c))
+    # the paper finds the Coulomb lines of all w parallel (section 3.1.3): c with the dry friction
+    # of the same engine, the mean of tau - tan(phi_dry) sigma_n (robust with few, noisy points)
+    for f in fits:
+        dry = [d for d in fits if d["engine"] == f["engine"] and d["protocol"] == "dry"]
+        rs = groups[(f["engine"], f["protocol"], f["bonds"], f["w_percent"])]
+        f["c_dry_phi_Pa"] = (float(np.mean([r["tau_plateau_Pa"] - dry[0]["tan_phi"] * r["sigma_n_Pa"]
+                                            for r in rs])) if dry else float("nan"))
     with open(os.path.join(out, "mohr_coulomb.csv"), "w", newline="") as f:
-        names = ["engine", "protocol", "bonds", "w_percent", "n_stresses", "tan_phi", "phi_deg", "c_Pa"]
+        names = ["engine", "protocol", "bonds", "w_percent", "n_stresses", "tan_phi", "phi_deg", "c_Pa",
+                 "c_dry_phi_Pa"]
         writer = csv.DictWriter(f, fieldnames=names)
         writer.writeheader()
         for r in fits:
             writer.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in r.items()})
     return fits
+
+
+def runs_dry(runs, engine, sigma):
+    return [(p, d) for _, p, d in runs
+            if p["engine"] == engine and p["protocol"] == "dry" and float(p["sigma"]) == sigma]
 
 
 def plots(runs, rows, fits, out):
@@ -145,6 +159,9 @@ def plots(runs, rows, fits, out):
         sigmas = sorted({float(p["sigma"]) for p, _ in sel})
         fig, axes = plt.subplots(1, len(sigmas), figsize=(4.5 * len(sigmas), 3.6), squeeze=False)
         for ax, sigma in zip(axes[0], sigmas):
+            if key[1] != "dry":   # the dry run of the same engine and sigma, for reference (Fig. 5)
+                for p, d in runs_dry(runs, key[0], sigma):
+                    ax.plot(d["dx_over_D"], d["tau_Pa"], color="k", lw=1, label="dry")
             for p, d in sorted((pd for pd in sel if float(pd[0]["sigma"]) == sigma),
                                key=lambda pd: float(pd[0]["w"])):
                 ax.plot(d["dx_over_D"], d["tau_Pa"], lw=1, label=f"w = {p['w']} %")
@@ -183,7 +200,10 @@ def plots(runs, rows, fits, out):
             dry = [f for f in fits if f["engine"] == key[0] and f["protocol"] == "dry"]
             fs = sorted(dry + [f for f in fits if (f["engine"], f["protocol"], f["bonds"]) == key],
                         key=lambda f: f["w_percent"])
-            ax.plot([f["w_percent"] for f in fs], [f["c_Pa"] for f in fs], "o-", label=" ".join(key))
+            line = ax.plot([f["w_percent"] for f in fs], [f["c_Pa"] for f in fs], "o-",
+                           label=" ".join(key) + ": free fit")[0]
+            ax.plot([f["w_percent"] for f in fs], [f["c_dry_phi_Pa"] for f in fs], "s--",
+                    color=line.get_color(), label=" ".join(key) + ": dry friction")
         ax.axhline(PAPER_CM_SIM, color="k", ls="--", lw=1, label="paper, simulation c_m")
         ax.axhline(PAPER_CM_EXP, color="gray", ls=":", lw=1, label="paper, experiment 1 mm beads")
         ax.set_xlabel("w [%]")
@@ -236,7 +256,8 @@ def main():
               f"{r['z_bond_start']:.2f} -> {r['z_bond_end']:.2f}")
     for f in fits:
         print(f"fit {f['engine']} {f['protocol']} {f['bonds']} w {f['w_percent']:g} %: "
-              f"tan(phi) {f['tan_phi']:.3f} (phi {f['phi_deg']:.1f} deg), c {f['c_Pa']:.1f} Pa")
+              f"tan(phi) {f['tan_phi']:.3f} (phi {f['phi_deg']:.1f} deg), c {f['c_Pa']:.1f} Pa; "
+              f"with the dry friction: c {f['c_dry_phi_Pa']:.1f} Pa")
 
 
 if __name__ == "__main__":
