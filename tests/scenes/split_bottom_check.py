@@ -1,7 +1,8 @@
 #!/usr/bin/python3
-"""Smoke test of the split-bottom scene (inputs/split_bottom/): runs the smoke deck of one
-engine dry and wet (fixed bridge volume 74.2 nl, law willett) through scripts/scene.sh on 2
-ranks and asserts the physics of the cell with inputs/split_bottom/post.py's analysis:
+"""Checks the smoke runs of the split-bottom scene (inputs/split_bottom/) of one engine, dry
+and wet (fixed bridge volume 74.2 nl, law willett), made by tests/scenes/split_bottom.cmake
+through scripts/scene.sh on 2 ranks into WORKDIR/dry and WORKDIR/wet, and asserts the
+physics of the cell with inputs/split_bottom/post.py's analysis:
 
   * the split bottom shears: at the lowest height omega/Omega is near 0 next to the inner
     wall and near 1 next to the outer wall, and the fitted band centre R_C lies at the split
@@ -14,10 +15,8 @@ ranks and asserts the physics of the cell with inputs/split_bottom/post.py's ana
   * the bridges hold the packing together: the torque needed to drive the wet cell is
     above the dry one.
 
-Usage: split_bottom_check.py ENGINE WORKDIR   (environment: CAPBRIDGE_SKIP_CONFIGURE=1,
-CAPBRIDGE_PLUGIN for LAMMPS; scripts/scene.sh's)."""
+Usage: split_bottom_check.py WORKDIR"""
 import os
-import subprocess
 import sys
 
 import numpy as np
@@ -34,18 +33,6 @@ def check(cond, what):
     print(("ok    " if cond else "FAIL  ") + what)
     if not cond:
         failures.append(what)
-
-
-def run(engine, work, name, volume):
-    out = os.path.join(work, name)
-    cmd = [os.path.join(TOP, "scripts", "scene.sh"), engine, "split_bottom", "-np", "2",
-           "-size", "smoke", "-out", out, "-var", "volume", str(volume), "-var", "law", "willett"]
-    print("+", " ".join(cmd), flush=True)
-    with open(os.path.join(work, name + ".out"), "w") as f:
-        rc = subprocess.call(cmd, stdout=f, stderr=subprocess.STDOUT)
-    if rc != 0:
-        sys.exit(f"{name}: scene.sh exited with {rc} (see {work}/{name}.out)")
-    return post.analyse(out)
 
 
 def shears(a, tag):
@@ -67,12 +54,15 @@ def shears(a, tag):
 
 
 def main():
-    if len(sys.argv) != 3:
+    if len(sys.argv) != 2:
         sys.exit(__doc__)
-    engine, work = sys.argv[1], sys.argv[2]
-    os.makedirs(work, exist_ok=True)
-    dry = run(engine, work, "dry", 0)
-    wet = run(engine, work, "wet", V_NL)
+    try:
+        dry = post.analyse(os.path.join(sys.argv[1], "dry"))
+        wet = post.analyse(os.path.join(sys.argv[1], "wet"))
+    except post.PostError as e:
+        sys.exit(f"split_bottom_check: {e}")
+    if wet["params"]["volume_nl"] != V_NL or dry["params"]["volume_nl"] != 0:
+        sys.exit("split_bottom_check: WORKDIR/dry must be a run with volume 0, WORKDIR/wet with 74.2")
     shears(dry, "dry")
     shears(wet, "wet")
     check(np.all(dry["bridges"] == 0) and np.all(dry["liquid"] == 0), "dry: no bridge at any output")
