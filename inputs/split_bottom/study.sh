@@ -39,7 +39,7 @@ one() {  # engine law volume
   [ "$3" != 0 ] || name="$1-dry"
   local out="$study/$name"
   runs+=("$out")
-  if [ -f "$out/torque.txt" ] && grep -q "^Total wall time" "$out"/log.* 2>/dev/null; then
+  if grep -qs "^SPLIT_BOTTOM_DONE" "$out"/log.*; then
     echo "study: $name done before, kept"
     return
   fi
