@@ -102,7 +102,7 @@ def write_runs(runs, out):
                          dx_end_D=float(d["dx_over_D"][-1]), phi_end=float(d["phi"][-1]),
                          z_bond_start=float(d["z_bond"][0]), z_bond_end=float(d["z_bond"][-1]),
                          liquid_max_abs_rel_change=float(np.abs(d["liquid_rel_change"]).max()),
-                         run=os.path.dirname(path)))
+                         run=os.path.basename(os.path.dirname(path))))
     rows.sort(key=lambda r: (r["engine"], r["protocol"], r["bonds"], r["w_percent"], r["sigma_Pa"]))
     with open(os.path.join(out, "runs.csv"), "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0]))
