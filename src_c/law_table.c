@@ -292,10 +292,10 @@ cb_status cb_table_force(const cb_law *law, const cb_pair *pair, double gap, dou
     /* dF/dgap = dF/dw / (dgap/dw), dgap/dw = -4 rupture w (1 - w^2). Both vanish at
      * contact (a finite limit) and dgap/dw vanishes at the fold (the exact force has an
      * infinite slope there). Within half a cell of either end the stiffness is taken at
-     * that half-cell point, so that it stays finite and well conditioned. */
+     * that half-cell point, so that it stays finite and well conditioned; the point lies
+     * in the same end cell, so the cell found for w serves. */
     double half = 0.5 * c.h;
     double w_slope = w < half ? half : w > 1.0 - half ? 1.0 - half : w;
-    if (w_slope != w) c = cell_at(t, &pair->table, w_slope);
     *stiffness = hermite_slope(&c, w_slope) * scale /
                  (-4.0 * rupture * w_slope * (1.0 - w_slope * w_slope));
     return CB_OK;
