@@ -78,8 +78,12 @@ close_rel() {
 # spacing 1.12 mm in a periodic box, written as a LAMMPS data file (atom_style sphere).
 # Park-Miller generator in awk (exact in doubles): the same file with every awk.
 # scene_data FILE NX NY NZ SEED [VMAX: random velocities in -VMAX..VMAX m/s, default 0.1]
+#            [SHIFT: the lattice moved by SHIFT spacings along x, y, z and wrapped into the
+#            box, default 0; 0.5 puts lattice planes on the box faces and on the faces of
+#            evenly split subdomains, which atoms then cross all the time]
 scene_data() {
-    awk -v nx="$2" -v ny="$3" -v nz="$4" -v seed="$5" -v vmax="${6:-0.1}" '
+    awk -v nx="$2" -v ny="$3" -v nz="$4" -v seed="$5" -v vmax="${6:-0.1}" -v shift="${7:-0}" '
+    function wrap(x, l) { return x >= l ? x - l : (x < 0 ? x + l : x) }
     function rnd() { seed = (16807 * seed) % 2147483647; return seed / 2147483647 }
     BEGIN {
         a = 1.12e-3; n = nx * ny * nz
@@ -91,9 +95,9 @@ scene_data() {
         for (k = 0; k < nz; k++) for (j = 0; j < ny; j++) for (i = 0; i < nx; i++) {
             id++
             d = 2 * (0.45e-3 + 0.1e-3 * rnd())
-            x = (i + 0.5) * a + 0.02e-3 * (2 * rnd() - 1)
-            y = (j + 0.5) * a + 0.02e-3 * (2 * rnd() - 1)
-            z = (k + 0.5) * a + 0.02e-3 * (2 * rnd() - 1)
+            x = wrap((i + 0.5 + shift) * a + 0.02e-3 * (2 * rnd() - 1), nx * a)
+            y = wrap((j + 0.5 + shift) * a + 0.02e-3 * (2 * rnd() - 1), ny * a)
+            z = wrap((k + 0.5 + shift) * a + 0.02e-3 * (2 * rnd() - 1), nz * a)
             printf "%d 1 %.17g 2500 %.17g %.17g %.17g\n", id, d, x, y, z
         }
         print "\nVelocities\n"
