@@ -97,6 +97,7 @@ def snapshot(run, out_png, dmean):
                for x, z, r in zip(b["x"][inslice], b["z"][inslice], b["radius"][inslice])]
     pc = PatchCollection(circles, cmap="viridis")
     pc.set_array(disp[inslice] * 1e3)
+    pc.set_clim(0, np.percentile(disp[inslice] * 1e3, 98))  # a few fast grains would wash it out
     ax.add_collection(pc)
     ax.autoscale_view()
     ax.set_aspect("equal")

@@ -5,9 +5,9 @@
 # (LAMMPS, w = 2 and 4 %, Protocol 1; LIGGGHTS, fixed volume), and dry; then post.py.
 # Usage: inputs/uniaxial/study.sh [smoke|default|paper] [lammps] [liggghts]
 #   (default: smoke, both engines). Writes out/uniaxial/study-SIZE/ and copies the CSV and PNG
-#   files to docs/results/uniaxial/ (SIZE in their names). Every run holds /tmp/eng/heavy.lock
-#   when that directory exists (machines shared by several jobs), and is skipped when its
-#   uniaxial.txt is complete already (delete the run directory to redo it).
+#   files to docs/results/uniaxial/ (SIZE in their names). Every default or paper run holds
+#   /tmp/eng/heavy.lock when that directory exists (machines shared by several jobs); a run is
+#   skipped when its end.dump exists already (delete the run directory to redo it).
 set -euo pipefail
 top=$(cd "$(dirname "$0")/../.." && pwd)
 size=${1:-smoke}
@@ -25,7 +25,7 @@ one() {  # one ENGINE NAME -var ... : runs a case unless it finished before
   if [ -f "$dir/end.dump" ]; then return; fi
   echo "study.sh: $engine $name" >&2
   local lock=()
-  [ -d /tmp/eng ] && lock=(flock /tmp/eng/heavy.lock)
+  [ -d /tmp/eng ] && [ "$size" != smoke ] && lock=(flock /tmp/eng/heavy.lock)
   "${lock[@]}" "$top/scripts/scene.sh" "$engine" uniaxial -np 2 -size "$size" -out "$dir" "$@" >"$dir.screen" 2>&1 \
     || { echo "study.sh: $engine $name failed, see $dir.screen" >&2; exit 1; }
 }
@@ -35,11 +35,15 @@ for engine in "${engines[@]}"; do
     liggghts) protocols=(fixed protocol2) half=fixed ;;
     *) echo "study.sh: unknown engine $engine" >&2; exit 2 ;;
   esac
-  for w in 0.02 0.04 0.06; do
-    for p in "${protocols[@]}"; do one "$engine" "$p-w$w" -var protocol "$p" -var w "$w"; done
+  # first the curve sigma_rupt(w) of the first protocol, the half-bridges variant and dry,
+  # then the other protocols
+  for p in "${protocols[@]}"; do
+    for w in 0.02 0.04 0.06; do one "$engine" "$p-w$w" -var protocol "$p" -var w "$w"; done
+    if [ "$p" = "${protocols[0]}" ]; then
+      for w in 0.02 0.04; do one "$engine" "$half-half-w$w" -var protocol "$half" -var w "$w" -var half yes; done
+      one "$engine" dry -var dry yes
+    fi
   done
-  for w in 0.02 0.04; do one "$engine" "$half-half-w$w" -var protocol "$half" -var w "$w" -var half yes; done
-  one "$engine" dry -var dry yes
 done
 /usr/bin/python3 "$top/inputs/uniaxial/post.py" "$out" "${runs[@]}" | tee "$out/strength.txt"
 dest=$top/docs/results/uniaxial
