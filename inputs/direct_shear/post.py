@@ -157,7 +157,7 @@ def plots(runs, rows, fits, out):
     for key in sorted({key_of(p) for _, p, _ in runs}):
         sel = [(p, d) for _, p, d in runs if key_of(p) == key]
         sigmas = sorted({float(p["sigma"]) for p, _ in sel})
-        fig, axes = plt.subplots(1, len(sigmas), figsize=(4.5 * len(sigmas), 3.6), squeeze=False)
+        fig, axes = plt.subplots(1, len(sigmas), figsize=(max(6.5, 4.5 * len(sigmas)), 3.6), squeeze=False)
         for ax, sigma in zip(axes[0], sigmas):
             if key[1] != "dry":   # the dry run of the same engine and sigma, for reference (Fig. 5)
                 for p, d in runs_dry(runs, key[0], sigma):
