@@ -9,7 +9,7 @@
 #   defaults: -size default, both engines, Gladkyy's four laws (weigert willett
 #   willett/reduced rabinovich) and the other four of capbridge (richefeu
 #   rabinovich/uncorrected soulie table), volumes 13.6 and 74.2 nl, -np 2.
-#   The full matrix at default size is 2 engines x 17 runs x ~12 min: about 7 h on 2 cores.
+#   The full matrix at default size is 2 engines x 17 runs x ~2 min on 2 idle cores: about 1 h 10 min.
 # Every run holds a lock file ($CAPBRIDGE_HEAVY_LOCK, default /tmp/capbridge-heavy.lock)
 # with flock, so that heavy runs started by several people do not share the cores.
 # Runs go to out/split_bottom/study-SIZE/ENGINE-LAW-VOLUME/ (an existing run with a snapshot

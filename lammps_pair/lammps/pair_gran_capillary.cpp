@@ -740,17 +740,20 @@ void PairGranCapillary::update_bridges()
 
       if (bridge->active != 0.0) {
         double vol = 0.0;
-        if (rsq >= cutsq[itype][jtype]) {
-          vol = bridge->volume;    // beyond the reach: ruptured before the pair is lost
-          bridge->volume = bridge->active = 0.0;
-          if (counted(i, j)) n_reach += 1.0;
-        } else {
-          cb_transition transition;
-          int status = cb_bridge_update(law(itype, jtype), radius[i], radius[j], gap, 0.0,
-                                        bridge, &transition, &vol);
-          check_cb(status, "bridge update", itype, jtype, radius[i], radius[j],
-                   bridge->volume, gap);
-          if (transition != CB_BRIDGE_RUPTURED) vol = 0.0;
+        cb_transition transition;
+        int status = cb_bridge_update(law(itype, jtype), radius[i], radius[j], gap, 0.0,
+                                      bridge, &transition, &vol);
+        check_cb(status, "bridge update", itype, jtype, radius[i], radius[j],
+                 bridge->volume, gap);
+        if (transition != CB_BRIDGE_RUPTURED) {
+          vol = 0.0;
+          if (rsq >= cutsq[itype][jtype]) {
+            // held beyond the reach (a volume above the one the reach was built for):
+            // ruptured here, before the pair leaves the neighbor list with its liquid
+            vol = bridge->volume;
+            bridge->volume = bridge->active = 0.0;
+            if (counted(i, j)) n_reach += 1.0;
+          }
         }
         if (vol > 0.0) {
           if (counted(i, j)) n_ruptured += 1.0;
@@ -899,23 +902,24 @@ void PairGranCapillary::form_bridges_and_forces()
         if (liquid_mode == LIQUID_FIXED && wet_pair(i, j, itype, jtype))
           available = design_volume(itype, jtype);
         double vol = 0.0;
+        cb_transition transition;
+        const double before = bridge->volume;
+        int status = cb_bridge_update(pair_law, radius[i], radius[j], gap, available, bridge,
+                                      &transition, &vol);
+        check_cb(status, "bridge update", itype, jtype, radius[i], radius[j],
+                 bridge->active != 0.0 ? bridge->volume : MAX(before, available), gap);
+        if (transition == CB_BRIDGE_FORMED && counted(i, j)) n_formed += 1.0;
+        if (transition == CB_BRIDGE_RUPTURED && counted(i, j)) n_ruptured += 1.0;
+        if (transition != CB_BRIDGE_RUPTURED) vol = 0.0;
         if (bridge->active != 0.0 && rsq >= cutsq[itype][jtype]) {
+          // held beyond the reach (a volume above the one the reach was built for):
+          // ruptured here, before the pair leaves the neighbor list with its liquid
           vol = bridge->volume;
           bridge->volume = bridge->active = 0.0;
           if (counted(i, j)) {
             n_reach += 1.0;
             n_ruptured += 1.0;
           }
-        } else {
-          cb_transition transition;
-          const double before = bridge->volume;
-          int status = cb_bridge_update(pair_law, radius[i], radius[j], gap, available, bridge,
-                                        &transition, &vol);
-          check_cb(status, "bridge update", itype, jtype, radius[i], radius[j],
-                   bridge->active != 0.0 ? bridge->volume : MAX(before, available), gap);
-          if (transition == CB_BRIDGE_FORMED && counted(i, j)) n_formed += 1.0;
-          if (transition == CB_BRIDGE_RUPTURED && counted(i, j)) n_ruptured += 1.0;
-          if (transition != CB_BRIDGE_RUPTURED) vol = 0.0;
         }
         if (vol > 0.0 && liquid_mode == LIQUID_PROTOCOL1 && counted(i, j)) pool_released += vol;
       }
