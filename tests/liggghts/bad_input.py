@@ -14,14 +14,14 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import liggghts_common as lc  # noqa: E402
 
-# Two touching spheres; {props} and {pair} are filled in per case.
-DECK = """units           si
+# The box and the contact properties every deck shares; {zlo}, {newton}, {props} filled in.
+HEADER = """units           si
 atom_style      granular
 atom_modify     map array
 boundary        f f f
 newton          {newton}
 communicate     single vel yes
-region          box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box
+region          box block -0.01 0.01 -0.01 0.01 {zlo} 0.01 units box
 create_box      1 box
 neighbor        5e-4 bin
 neigh_modify    delay 0
@@ -31,7 +31,10 @@ fix m3 all property/global gamman peratomtypepair 1 0
 fix m4 all property/global gammat peratomtypepair 1 0
 fix m5 all property/global coefficientFriction peratomtypepair 1 0.5
 {props}
-pair_style      gran model hooke/stiffness tangential history cohesion {pair}
+"""
+
+# Two touching spheres; {pair} is filled in per case.
+DECK = """pair_style      gran model hooke/stiffness tangential history cohesion {pair}
 pair_coeff      * *
 timestep        1e-6
 create_atoms    1 single 0 0 0 units box
@@ -85,23 +88,8 @@ CASES = [
      ["bridgeVolume", "willett", "validity strict"]),
 ]
 
-WALL_DECK = """units           si
-atom_style      granular
-atom_modify     map array
-boundary        f f f
-newton          off
-communicate     single vel yes
-region          box block -0.01 0.01 -0.01 0.01 -0.001 0.01 units box
-create_box      1 box
-neighbor        5e-4 bin
-neigh_modify    delay 0
-fix m1 all property/global kn peratomtypepair 1 1000
-fix m2 all property/global kt peratomtypepair 1 1000
-fix m3 all property/global gamman peratomtypepair 1 0
-fix m4 all property/global gammat peratomtypepair 1 0
-fix m5 all property/global coefficientFriction peratomtypepair 1 0.5
-{props}
-pair_style      gran model hooke/stiffness tangential history cohesion capillary law willett
+# One sphere on a wall (walls are dry).
+WALL_DECK = """pair_style      gran model hooke/stiffness tangential history cohesion capillary law willett
 pair_coeff      * *
 fix             floor all wall/gran model hooke/stiffness tangential history &
                 cohesion capillary primitive type 1 zplane 0.0
@@ -131,7 +119,7 @@ def main():
     for k, (name, props, pair, newton, words) in enumerate(CASES):
         deck = os.path.join(workdir, "in.bad%02d" % k)
         with open(deck, "w") as f:
-            f.write(DECK.format(props=props, pair=pair, newton=newton))
+            f.write(HEADER.format(zlo=-0.01, newton=newton, props=props) + DECK.format(pair=pair))
         code, log = lc.liggghts(env, deck, [], workdir, log="log.bad%02d" % k)
         line = lc.error_line(log)
         good = code != 0 and line is not None and all(w in line for w in words)
@@ -142,7 +130,7 @@ def main():
     # walls are dry: the floor pushes (k_n * overlap) and does not pull
     deck = os.path.join(workdir, "in.wall")
     with open(deck, "w") as f:
-        f.write(WALL_DECK.format(props=ALL))
+        f.write(HEADER.format(zlo=-0.001, newton="off", props=ALL) + WALL_DECK)
     code, log = lc.liggghts(env, deck, [], workdir, log="log.wall")
     rows = lc.thermo_rows(log)
     warned = "walls are dry" in log
