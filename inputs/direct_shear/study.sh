@@ -3,10 +3,11 @@
 # scripts/scene.sh, then post.py; copies the CSV and PNG into docs/results/direct_shear/.
 #
 # Usage: inputs/direct_shear/study.sh [-size smoke|default|paper] [-np N] [-engines "lammps liggghts"]
-#                                     [-sigmas "200 500 800"] [-ws "0 0.1 0.5 1 2"] [-nohalf] [-nocopy]
+#                                     [-sigmas "200 500 800"] [-ws "0 0.1 0.5 1 2"] [-protocols "1 2"]
+#                                     [-nohalf] [-nocopy]
 #   the full matrix at default size (the command the results page refers to):
 #     CAPBRIDGE_SKIP_CONFIGURE=1 inputs/direct_shear/study.sh -size default
-#   LAMMPS: Protocols 1 and 2 for every wet w; LIGGGHTS: protocol2 (it has no Protocol 1);
+#   LAMMPS: Protocols 1 and 2 for every wet w (-protocols: a subset); LIGGGHTS: protocol2 (it has no Protocol 1);
 #   dry runs once per engine and sigma; the half-bonds variant (Fig. 7): LAMMPS, Protocol 2,
 #   w = 1 %, the middle sigma, next to its all-bonds run.
 # Outputs: out/direct_shear/study-SIZE/<engine>-p<protocol>-<bonds>-s<sigma>-w<w>/ (one run each),
@@ -16,7 +17,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
-size=default np=2 engines="lammps liggghts" sigmas="200 500 800" ws="0 0.1 0.5 1 2" half=1 copy=1
+size=default np=2 engines="lammps liggghts" sigmas="200 500 800" ws="0 0.1 0.5 1 2" lammps_protocols="1 2" half=1 copy=1
 while [ $# -gt 0 ]; do
   case $1 in
     -size) size=$2; shift 2 ;;
@@ -24,9 +25,10 @@ while [ $# -gt 0 ]; do
     -engines) engines=$2; shift 2 ;;
     -sigmas) sigmas=$2; shift 2 ;;
     -ws) ws=$2; shift 2 ;;
+    -protocols) lammps_protocols=$2; shift 2 ;;
     -nohalf) half=0; shift ;;
     -nocopy) copy=0; shift ;;
-    *) sed -n '2,17p' "$0" >&2; exit 2 ;;
+    *) sed -n '2,18p' "$0" >&2; exit 2 ;;
   esac
 done
 study="$top/out/direct_shear/study-$size"
@@ -53,7 +55,7 @@ one() {  # one ENGINE NAME -var ...: one run unless its shear.txt is complete
 
 mid=$(echo "$sigmas" | awk '{print $(int((NF + 1) / 2))}')
 for engine in $engines; do
-  if [ "$engine" = lammps ]; then protocols="1 2"; else protocols="protocol2"; fi
+  if [ "$engine" = lammps ]; then protocols=$lammps_protocols; else protocols="protocol2"; fi
   for sigma in $sigmas; do
     for w in $ws; do
       if [ "$w" = 0 ]; then
