@@ -13,11 +13,14 @@
  * "passed", so that the force of eq. 10, defined up to and including delta_max, is never
  * cut inside its own domain).
  *
+ * cb_bridge_step is the engines' call in their pair loop: the update and then the force of
+ * the bridge's new state (cb_force), sharing one pair and one rupture distance.
+ *
  * The state is validated before anything is changed, and all outputs are written together
- * at the end: on any error the bridge, the transition and the released volume are left
- * exactly as they were.
+ * at the end: on any error the bridge, the transition, the released volume and the force
+ * are left exactly as they were.
  */
-#include "capbridge.h"
+#include "laws.h"
 
 #include <math.h>
 
@@ -33,11 +36,14 @@ static cb_status check_state(const cb_bridge *bridge)
     return CB_ERR_RANGE;
 }
 
-cb_status cb_bridge_update(const cb_law *law, double r1, double r2, double gap,
-                           double available_volume, cb_bridge *bridge,
-                           cb_transition *transition, double *released_volume)
+/* The next state of a bridge (both public calls below). When the bridge exists after the
+ * step and is stretched (gap > 0), formed now, or want_rupture is set, *pair is made for
+ * its volume and *rupture is its rupture distance (else *rupture is 0). */
+static cb_status advance(const cb_law *law, double r1, double r2, double gap,
+                         double available_volume, const cb_bridge *bridge, int want_rupture,
+                         cb_bridge *next, cb_transition *change, double *released,
+                         cb_pair *pair, double *rupture)
 {
-    if (!law || !bridge || !transition || !released_volume) return CB_ERR_NULL;
     if (!law->prepared) return CB_ERR_RANGE;
     if (!isfinite(r1) || !isfinite(r2) || !isfinite(gap) || !isfinite(available_volume))
         return CB_ERR_NOT_FINITE;
@@ -45,40 +51,77 @@ cb_status cb_bridge_update(const cb_law *law, double r1, double r2, double gap,
     cb_status status = check_state(bridge);
     if (status != CB_OK) return status;
 
-    cb_bridge next = *bridge;
-    cb_transition change;
-    double released = 0.0;
-
+    *next = *bridge;
+    *released = 0.0;
+    *rupture = 0.0;
     if (bridge->active == 1.0) {
-        change = CB_BRIDGE_HELD;
-        if (gap > 0.0) {
-            /* In overlap the rupture distance (> 0) cannot be exceeded: not evaluated. */
-            double rupture = 0.0;
-            status = cb_rupture_distance(law, r1, r2, bridge->volume, &rupture);
+        *change = CB_BRIDGE_HELD;
+        /* In overlap the rupture distance (> 0) cannot be exceeded: evaluated only when
+         * asked for (the force needs it). */
+        if (gap > 0.0 || want_rupture) {
+            *pair = cb_pair_make(law, r1, r2, bridge->volume);
+            status = cb_pair_rupture(law, pair, rupture);
             if (status != CB_OK) return status;
-            if (gap > rupture) {
-                change = CB_BRIDGE_RUPTURED;
-                released = bridge->volume;
-                next.volume = 0.0;
-                next.active = 0.0;
+            if (gap > *rupture) {
+                *change = CB_BRIDGE_RUPTURED;
+                *released = bridge->volume;
+                next->volume = 0.0;
+                next->active = 0.0;
             }
         }
     } else if (gap <= 0.0 && available_volume > 0.0) {
         /* Ask the law for the rupture distance of the new bridge once: a volume the law
          * refuses (validity strict, or beyond the table) is reported now, at formation,
          * not at the first force call — and no bridge is formed. */
-        double rupture = 0.0;
-        status = cb_rupture_distance(law, r1, r2, available_volume, &rupture);
+        *pair = cb_pair_make(law, r1, r2, available_volume);
+        status = cb_pair_rupture(law, pair, rupture);
         if (status != CB_OK) return status;
-        change = CB_BRIDGE_FORMED;
-        next.volume = available_volume;
-        next.active = 1.0;
+        *change = CB_BRIDGE_FORMED;
+        next->volume = available_volume;
+        next->active = 1.0;
     } else {
-        change = CB_BRIDGE_STAYS_DRY;
+        *change = CB_BRIDGE_STAYS_DRY;
     }
+    return CB_OK;
+}
 
+cb_status cb_bridge_update(const cb_law *law, double r1, double r2, double gap,
+                           double available_volume, cb_bridge *bridge,
+                           cb_transition *transition, double *released_volume)
+{
+    if (!law || !bridge || !transition || !released_volume) return CB_ERR_NULL;
+    cb_bridge next;
+    cb_transition change;
+    cb_pair pair;
+    double released = 0.0, rupture = 0.0;
+    cb_status status = advance(law, r1, r2, gap, available_volume, bridge, 0, &next, &change,
+                               &released, &pair, &rupture);
+    if (status != CB_OK) return status;
     *bridge = next;
     *transition = change;
     *released_volume = released;
+    return CB_OK;
+}
+
+cb_status cb_bridge_step(const cb_law *law, double r1, double r2, double gap,
+                         double available_volume, cb_bridge *bridge, cb_transition *transition,
+                         double *released_volume, double *force)
+{
+    if (!law || !bridge || !transition || !released_volume || !force) return CB_ERR_NULL;
+    cb_bridge next;
+    cb_transition change;
+    cb_pair pair;
+    double released = 0.0, rupture = 0.0, f = 0.0;
+    cb_status status = advance(law, r1, r2, gap, available_volume, bridge, 1, &next, &change,
+                               &released, &pair, &rupture);
+    if (status != CB_OK) return status;
+    if (next.active == 1.0) {
+        status = cb_pair_force(law, &pair, rupture, gap, &f, NULL);
+        if (status != CB_OK) return status;
+    }
+    *bridge = next;
+    *transition = change;
+    *released_volume = released;
+    *force = f;
     return CB_OK;
 }

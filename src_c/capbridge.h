@@ -207,6 +207,13 @@ cb_status cb_bridge_update(const cb_law *law, double r1, double r2, double gap,
                            double available_volume, cb_bridge *bridge,
                            cb_transition *transition, double *released_volume);
 
+/* cb_bridge_update, then the capillary force of the bridge's new state at this gap (as
+ * cb_force; 0 without a bridge): the call of an engine's pair loop, which computes the
+ * pair's radii conventions and the rupture distance once instead of twice. */
+cb_status cb_bridge_step(const cb_law *law, double r1, double r2, double gap,
+                         double available_volume, cb_bridge *bridge, cb_transition *transition,
+                         double *released_volume, double *force);
+
 /* ------------------------------------------------------ liquid protocols */
 
 /* Protocol 2 (Richefeu 2007 §3.2): the liquid of a broken bridge is split between the

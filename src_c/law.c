@@ -300,6 +300,16 @@ static double rupture_of(const cb_law *law, const cb_pair *pair)
     }
 }
 
+cb_status cb_pair_rupture(const cb_law *law, const cb_pair *pair, double *rupture)
+{
+    if (law->validity == CB_VALIDITY_STRICT && !inside_validity(law, pair))
+        return CB_ERR_OUT_OF_VALIDITY;
+    double d = rupture_of(law, pair);
+    if (!(isfinite(d) && d > 0.0)) return CB_ERR_RANGE; /* scales beyond double range */
+    *rupture = d;
+    return CB_OK;
+}
+
 cb_status cb_rupture_distance(const cb_law *law, double r1, double r2, double volume,
                               double *distance)
 {
@@ -307,12 +317,7 @@ cb_status cb_rupture_distance(const cb_law *law, double r1, double r2, double vo
     if (status != CB_OK) return status;
     if (!distance) return CB_ERR_NULL;
     cb_pair pair = cb_pair_make(law, r1, r2, volume);
-    if (law->validity == CB_VALIDITY_STRICT && !inside_validity(law, &pair))
-        return CB_ERR_OUT_OF_VALIDITY;
-    double d = rupture_of(law, &pair);
-    if (!(isfinite(d) && d > 0.0)) return CB_ERR_RANGE; /* scales beyond double range */
-    *distance = d;
-    return CB_OK;
+    return cb_pair_rupture(law, &pair, distance);
 }
 
 cb_status cb_rupture_volume(const cb_law *law, double r1, double r2, double gap, double *volume)
@@ -338,6 +343,28 @@ cb_status cb_rupture_volume(const cb_law *law, double r1, double r2, double gap,
     return CB_OK;
 }
 
+cb_status cb_pair_force(const cb_law *law, const cb_pair *pair, double rupture, double gap,
+                        double *force, double *stiffness)
+{
+    cb_status status = CB_OK;
+    double f = 0.0, df = 0.0;
+    if (gap < 0.0) {
+        /* Overlap: Richefeu eq. 10 keeps the contact value (continuous); Gladkyy eq. 4
+         * applies no capillary force in mechanical contact. */
+        if (law->overlap == CB_OVERLAP_CONTACT) {
+            status = model_forces[law->model](law, pair, 0.0, &f, &df);
+            df = 0.0;
+        }
+    } else if (gap <= rupture) {
+        status = model_forces[law->model](law, pair, gap, &f, &df);
+    }
+    if (status != CB_OK) return status;
+    if (!isfinite(f) || !isfinite(df) || f < 0.0) return CB_ERR_RANGE;
+    *force = f;
+    if (stiffness) *stiffness = df;
+    return CB_OK;
+}
+
 cb_status cb_force(const cb_law *law, double r1, double r2, double volume, double gap,
                    double *force, double *stiffness)
 {
@@ -346,27 +373,10 @@ cb_status cb_force(const cb_law *law, double r1, double r2, double volume, doubl
     if (!force) return CB_ERR_NULL;
     if (!isfinite(gap)) return CB_ERR_NOT_FINITE;
     cb_pair pair = cb_pair_make(law, r1, r2, volume);
-    if (law->validity == CB_VALIDITY_STRICT && !inside_validity(law, &pair))
-        return CB_ERR_OUT_OF_VALIDITY;
-
-    double f = 0.0, df = 0.0;
-    double rupture = rupture_of(law, &pair);
-    if (!(isfinite(rupture) && rupture > 0.0)) return CB_ERR_RANGE; /* scales beyond range */
-    if (gap < 0.0) {
-        /* Overlap: Richefeu eq. 10 keeps the contact value (continuous); Gladkyy eq. 4
-         * applies no capillary force in mechanical contact. */
-        if (law->overlap == CB_OVERLAP_CONTACT) {
-            status = model_forces[law->model](law, &pair, 0.0, &f, &df);
-            df = 0.0;
-        }
-    } else if (gap <= rupture) {
-        status = model_forces[law->model](law, &pair, gap, &f, &df);
-    }
+    double rupture = 0.0;
+    status = cb_pair_rupture(law, &pair, &rupture);
     if (status != CB_OK) return status;
-    if (!isfinite(f) || !isfinite(df) || f < 0.0) return CB_ERR_RANGE;
-    *force = f;
-    if (stiffness) *stiffness = df;
-    return CB_OK;
+    return cb_pair_force(law, &pair, rupture, gap, force, stiffness);
 }
 
 /* |dF/dgap| at gap = rupture t^2 (0 where the law has no bridge). */

@@ -32,6 +32,14 @@ typedef struct cb_pair {
 /* The pair of one call; for the table law, located in its table. */
 cb_pair cb_pair_make(const cb_law *law, double r1, double r2, double volume);
 
+/* For a pair already made from checked inputs (cb_force, cb_rupture_distance and
+ * cb_bridge_step share them, so one call computes the rupture distance once):
+ * the rupture distance under the law's rupture and validity rules, and the force at a
+ * finite gap under the overlap and rupture rules (as cb_force). */
+cb_status cb_pair_rupture(const cb_law *law, const cb_pair *pair, double *rupture);
+cb_status cb_pair_force(const cb_law *law, const cb_pair *pair, double rupture, double gap,
+                        double *force, double *stiffness);
+
 /* A law's force at 0 <= gap <= rupture: writes F >= 0 and dF/dgap.
  * Returns CB_ERR_NO_BRIDGE where the law has no bridge (e.g. Weigert's arcsin > 1). */
 typedef cb_status (*cb_force_fn)(const cb_law *law, const cb_pair *pair, double gap,

@@ -1,4 +1,6 @@
-/* test_bridge.c — the bridge state and its transitions (cb_bridge_update).
+/* test_bridge.c — the bridge state and its transitions (cb_bridge_update), and
+ * cb_bridge_step: every update below is made by both calls, which must agree bit for bit,
+ * and the step's force must be cb_force of the new state.
  *
  * Rupture distances are recomputed here from the published formulas (Richefeu eq. 6 for
  * Lian's rule, Gladkyy eq. 2 for Willett's), not taken from the library, wherever the
@@ -45,12 +47,25 @@ static double willett_reference(double theta_degrees, double r1, double r2, doub
 
 static int same_bits(double a, double b) { return memcmp(&a, &b, sizeof a) == 0; }
 
-/* One update, checking the status; returns the transition. */
+/* One update, checking the status; returns the transition. cb_bridge_step makes the same
+ * update on a copy: same state, transition and release, and the force of the new state
+ * (cb_force, or 0 without a bridge). */
 static cb_transition step(const cb_law *law, double r1, double r2, double gap, double available,
                           cb_bridge *bridge, double *released)
 {
-    cb_transition t = (cb_transition)-1;
+    cb_bridge copy = *bridge;
+    cb_transition t = (cb_transition)-1, t_step = (cb_transition)-2;
+    double released_step = -2.0, force = -1.0;
     CHECK_STATUS(cb_bridge_update(law, r1, r2, gap, available, bridge, &t, released), CB_OK);
+    CHECK_STATUS(cb_bridge_step(law, r1, r2, gap, available, &copy, &t_step, &released_step,
+                                &force),
+                 CB_OK);
+    CHECK(memcmp(&copy, bridge, sizeof copy) == 0 && t_step == t &&
+          same_bits(released_step, *released));
+    double expected_force = 0.0;
+    if (bridge->active == 1.0)
+        CHECK_STATUS(cb_force(law, r1, r2, bridge->volume, gap, &expected_force, NULL), CB_OK);
+    CHECK(same_bits(force, expected_force));
     return t;
 }
 
@@ -191,11 +206,15 @@ static void expect_error(const cb_law *law, double r1, double r2, double gap, do
 {
     cb_bridge b = state;
     cb_transition t = (cb_transition)77;
-    double released = 12345.0;
+    double released = 12345.0, force = 678.0;
     CHECK_STATUS(cb_bridge_update(law, r1, r2, gap, available, &b, &t, &released), expected);
     CHECK(memcmp(&b, &state, sizeof b) == 0);
     CHECK(t == (cb_transition)77);
     CHECK(released == 12345.0);
+    CHECK_STATUS(cb_bridge_step(law, r1, r2, gap, available, &b, &t, &released, &force),
+                 expected);
+    CHECK(memcmp(&b, &state, sizeof b) == 0);
+    CHECK(t == (cb_transition)77 && released == 12345.0 && force == 678.0);
 }
 
 static void errors(const cb_law *law)
@@ -208,6 +227,12 @@ static void errors(const cb_law *law)
     CHECK_STATUS(cb_bridge_update(law, r, r, 0.0, v, NULL, &t, &released), CB_ERR_NULL);
     CHECK_STATUS(cb_bridge_update(law, r, r, 0.0, v, &dry, NULL, &released), CB_ERR_NULL);
     CHECK_STATUS(cb_bridge_update(law, r, r, 0.0, v, &dry, &t, NULL), CB_ERR_NULL);
+    double force = 0.0;
+    CHECK_STATUS(cb_bridge_step(NULL, r, r, 0.0, v, &dry, &t, &released, &force), CB_ERR_NULL);
+    CHECK_STATUS(cb_bridge_step(law, r, r, 0.0, v, NULL, &t, &released, &force), CB_ERR_NULL);
+    CHECK_STATUS(cb_bridge_step(law, r, r, 0.0, v, &dry, NULL, &released, &force), CB_ERR_NULL);
+    CHECK_STATUS(cb_bridge_step(law, r, r, 0.0, v, &dry, &t, NULL, &force), CB_ERR_NULL);
+    CHECK_STATUS(cb_bridge_step(law, r, r, 0.0, v, &dry, &t, &released, NULL), CB_ERR_NULL);
     CHECK(dry.volume == 0.0 && dry.active == 0.0);
 
     cb_law unprepared;
@@ -260,7 +285,19 @@ static void strict_validity(void)
     cb_bridge b = dry;
     CHECK(step(&strict, r, r, 1e-6, v, &b, &released) == CB_BRIDGE_STAYS_DRY);
     b = wet;
-    CHECK(step(&strict, r, r, -1e-7, v, &b, &released) == CB_BRIDGE_HELD);
+    cb_transition t = (cb_transition)-1;
+    CHECK_STATUS(cb_bridge_update(&strict, r, r, -1e-7, v, &b, &t, &released), CB_OK);
+    CHECK(t == CB_BRIDGE_HELD);
+    /* ... but its force is refused, so cb_bridge_step (update and force) is refused whole */
+    double force = 0.0;
+    CHECK_STATUS(cb_force(&strict, r, r, v, -1e-7, &force, NULL), CB_ERR_OUT_OF_VALIDITY);
+    b = wet;
+    t = (cb_transition)77;
+    released = force = 5.0;
+    CHECK_STATUS(cb_bridge_step(&strict, r, r, -1e-7, 0.0, &b, &t, &released, &force),
+                 CB_ERR_OUT_OF_VALIDITY);
+    CHECK(memcmp(&b, &wet, sizeof b) == 0 && t == (cb_transition)77 && released == 5.0 &&
+          force == 5.0);
 
     cb_law strict_ok = make_law(0.0, NULL, "strict");
     b = dry;
