@@ -17,8 +17,9 @@
      f_n^c = -f_capillary the (attractive, negative) capillary force: the capillary
      attraction adds to the normal load that friction can mobilise.
    bridge    the cb_bridge of the pair (volume, active) in the pair history; its
-     transitions are the core's (cb_bridge_update): formation at contact with liquid
-     available, rupture beyond the law's rupture distance.
+     transitions are the core's (cb_bridge_step, which gives the force of the new state
+     too): formation at contact with liquid available, rupture beyond the law's rupture
+     distance.
 
    Liquid (the volume a new bridge receives, where a broken bridge's liquid goes):
      fixed      the type pair's `volume` (or fix capillary/liquid fixed V)
@@ -52,6 +53,7 @@
 #include "update.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstring>
 
@@ -131,6 +133,7 @@ PairGranCapillary::PairGranCapillary(LAMMPS *lmp) : Pair(lmp)
   svector = new double[SV_COUNT];
 
   kn = kt = damping = mu = volume = cut_pair = nullptr;
+  damping_coefficient = formation_volume = nullptr;
   contact_on = law_of = nullptr;
   rad_min = rad_max = nullptr;
   friction_wet = 1;
@@ -181,6 +184,8 @@ PairGranCapillary::~PairGranCapillary()
     memory->destroy(mu);
     memory->destroy(volume);
     memory->destroy(cut_pair);
+    memory->destroy(damping_coefficient);
+    memory->destroy(formation_volume);
     memory->destroy(contact_on);
     memory->destroy(law_of);
     delete[] rad_min;
@@ -212,6 +217,8 @@ void PairGranCapillary::allocate()
   memory->create(mu, n + 1, n + 1, "pair:mu");
   memory->create(volume, n + 1, n + 1, "pair:volume");
   memory->create(cut_pair, n + 1, n + 1, "pair:cut_pair");
+  memory->create(damping_coefficient, n + 1, n + 1, "pair:damping_coefficient");
+  memory->create(formation_volume, n + 1, n + 1, "pair:formation_volume");
   memory->create(contact_on, n + 1, n + 1, "pair:contact_on");
   memory->create(law_of, n + 1, n + 1, "pair:law_of");
   for (int i = 0; i <= n; i++)
@@ -219,7 +226,7 @@ void PairGranCapillary::allocate()
       setflag[i][j] = 0;
       kn[i][j] = kt[i][j] = damping[i][j] = mu[i][j] = 0.0;
       volume[i][j] = -1.0;
-      cut_pair[i][j] = 0.0;
+      cut_pair[i][j] = damping_coefficient[i][j] = formation_volume[i][j] = 0.0;
       contact_on[i][j] = 0;
       law_of[i][j] = -1;
     }
@@ -578,6 +585,11 @@ double PairGranCapillary::init_one(int i, int j)
   contact_on[j][i] = contact_on[i][j];
   law_of[j][i] = law_of[i][j];
   cut_pair[i][j] = cut_pair[j][i] = cut;
+  // per type pair, once: the dashpot's 2 alpha sqrt(k_n) (times sqrt(m) per contact), and
+  // the volume a new bridge gets at contact in liquid mode fixed (0: none forms here)
+  damping_coefficient[i][j] = damping_coefficient[j][i] = 2.0 * damping[i][j] * sqrt(kn[i][j]);
+  formation_volume[i][j] = formation_volume[j][i] =
+      liquid_mode == LIQUID_FIXED ? design_volume(i, j) : 0.0;
   return cut;
 }
 
@@ -613,6 +625,18 @@ void PairGranCapillary::transfer_history(double *source, double *target, int /*i
 {
   for (int k = 0; k < 3; k++) target[HIST_SHEAR + k] = -source[HIST_SHEAR + k];
   for (int k = 0; k < CB_BRIDGE_DOUBLES; k++) target[HIST_BRIDGE + k] = source[HIST_BRIDGE + k];
+}
+
+/* ----------------------------------------------------------------------
+   the pair loops' test that skips a dry pair without a square root: true only where the
+   gap sqrt(rsq) - radsum, as computed, is > 0 (a bridge forms at gap <= 0, touching
+   included): rsq above radsum^2 by more than the rounding of the root, the square and the
+   difference (3 ulp; 4 DBL_EPSILON is a safe bound)
+------------------------------------------------------------------------- */
+
+static inline bool certainly_apart(double rsq, double radsum)
+{
+  return rsq > radsum * radsum * (1.0 + 4.0 * DBL_EPSILON);
 }
 
 /* ----------------------------------------------------------------------
@@ -735,8 +759,11 @@ void PairGranCapillary::update_bridges()
       const double dely = x[i][1] - x[j][1];
       const double delz = x[i][2] - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
+      const double radsum = radius[i] + radius[j];
+      // apart and dry: neither a bridge to advance nor a candidate (bridges form at contact)
+      if (bridge->active == 0.0 && certainly_apart(rsq, radsum)) continue;
       const double r = sqrt(rsq);
-      const double gap = r - (radius[i] + radius[j]);
+      const double gap = r - radsum;
 
       if (bridge->active != 0.0) {
         double vol = 0.0;
@@ -874,10 +901,19 @@ void PairGranCapillary::form_bridges_and_forces()
       const double delz = x[i][2] - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
       const double radsum = radius[i] + radius[j];
-      const double gap = sqrt(rsq) - radsum;
+      if (bridge->active == 0.0 && certainly_apart(rsq, radsum)) {
+        // apart and dry, the common case: no force, and no bridge can form (only at
+        // contact); no square root, no call into the core
+        touch[jj] = 0;
+        history[HIST_SHEAR] = history[HIST_SHEAR + 1] = history[HIST_SHEAR + 2] = 0.0;
+        continue;
+      }
+      const double r = sqrt(rsq);
+      const double gap = r - radsum;
       const cb_law *pair_law = law(itype, jtype);
-
+      double capillary = 0.0;
       if (per_atom) {
+        // the bridges were advanced in update_bridges(): here they form, or give their force
         if (bridge->active == 0.0) {
           if (gap <= 0.0 && wet_pair(i, j, itype, jtype)) {
             double offer_i = offer[i], offer_j = offer[j], available = 0.0;
@@ -886,26 +922,32 @@ void PairGranCapillary::form_bridges_and_forces()
             if (available > 0.0) {
               cb_transition transition;
               double none = 0.0;
-              status = cb_bridge_update(pair_law, radius[i], radius[j], gap, available, bridge,
-                                        &transition, &none);
+              status = cb_bridge_step(pair_law, radius[i], radius[j], gap, available, bridge,
+                                      &transition, &none, &capillary);
               check_cb(status, "bridge formation", itype, jtype, radius[i], radius[j],
                        available, gap);
               if (transition == CB_BRIDGE_FORMED && counted(i, j)) n_formed += 1.0;
             }
           }
-        } else if (protocol3) {
-          if (deposit[i] > 0.0 && best_partner[i] == tag[j]) bridge->volume += deposit[i];
-          if (deposit[j] > 0.0 && best_partner[j] == tag[i]) bridge->volume += deposit[j];
+        } else {
+          if (protocol3) {
+            if (deposit[i] > 0.0 && best_partner[i] == tag[j]) bridge->volume += deposit[i];
+            if (deposit[j] > 0.0 && best_partner[j] == tag[i]) bridge->volume += deposit[j];
+          }
+          int status = cb_force(pair_law, radius[i], radius[j], bridge->volume, gap, &capillary,
+                                nullptr);
+          check_cb(status, "capillary force", itype, jtype, radius[i], radius[j],
+                   bridge->volume, gap);
         }
-      } else {
-        double available = 0.0;
-        if (liquid_mode == LIQUID_FIXED && wet_pair(i, j, itype, jtype))
-          available = design_volume(itype, jtype);
+      } else if (bridge->active != 0.0 ||
+                 (formation_volume[itype][jtype] > 0.0 && wet_pair(i, j, itype, jtype))) {
+        // a bridge to advance, or one to form (dry pairs that cannot get one skip the core)
+        const double available = bridge->active != 0.0 ? 0.0 : formation_volume[itype][jtype];
         double vol = 0.0;
         cb_transition transition;
         const double before = bridge->volume;
-        int status = cb_bridge_update(pair_law, radius[i], radius[j], gap, available, bridge,
-                                      &transition, &vol);
+        int status = cb_bridge_step(pair_law, radius[i], radius[j], gap, available, bridge,
+                                    &transition, &vol, &capillary);
         check_cb(status, "bridge update", itype, jtype, radius[i], radius[j],
                  bridge->active != 0.0 ? bridge->volume : MAX(before, available), gap);
         if (transition == CB_BRIDGE_FORMED && counted(i, j)) n_formed += 1.0;
@@ -916,6 +958,7 @@ void PairGranCapillary::form_bridges_and_forces()
           // ruptured here, before the pair leaves the neighbor list with its liquid
           vol = bridge->volume;
           bridge->volume = bridge->active = 0.0;
+          capillary = 0.0;
           if (counted(i, j)) {
             n_reach += 1.0;
             n_ruptured += 1.0;
@@ -923,19 +966,21 @@ void PairGranCapillary::form_bridges_and_forces()
         }
         if (vol > 0.0 && liquid_mode == LIQUID_PROTOCOL1 && counted(i, j)) pool_released += vol;
       }
-      pair_force(i, j, jj, history, touch, history_update);
+      pair_force(i, j, delx, dely, delz, rsq, r, gap, capillary, history, touch[jj],
+                 history_update);
     }
   }
 }
 
 /* ----------------------------------------------------------------------
-   contact, capillary and tangential forces of one pair; keeps the history flag
+   contact and tangential forces of one pair plus its capillary force (computed by the
+   caller with the bridge's update); keeps the history flag
 ------------------------------------------------------------------------- */
 
-void PairGranCapillary::pair_force(int i, int j, int jj, double *history, int *touch,
-                                   int history_update)
+void PairGranCapillary::pair_force(int i, int j, double delx, double dely, double delz,
+                                   double rsq, double r, double gap, double capillary,
+                                   double *history, int &touch, int history_update)
 {
-  double **x = atom->x;
   double **v = atom->v;
   double **f = atom->f;
   double **omega = atom->omega;
@@ -947,28 +992,14 @@ void PairGranCapillary::pair_force(int i, int j, int jj, double *history, int *t
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
   const int itype = type[i], jtype = type[j];
-
-  const double delx = x[i][0] - x[j][0];
-  const double dely = x[i][1] - x[j][1];
-  const double delz = x[i][2] - x[j][2];
-  const double rsq = delx * delx + dely * dely + delz * delz;
-  const double r = sqrt(rsq);
   const double radi = radius[i], radj = radius[j];
-  const double gap = r - (radi + radj);
   cb_bridge *bridge = bridge_of(history);
   double *shear = &history[HIST_SHEAR];
 
-  double capillary = 0.0;
-  if (bridge->active != 0.0) {
-    int status = cb_force(law(itype, jtype), radi, radj, bridge->volume, gap, &capillary, nullptr);
-    check_cb(status, "capillary force", itype, jtype, radi, radj, bridge->volume, gap);
-  }
-
   const int in_contact = contact_on[itype][jtype] && gap < 0.0;
-  touch[jj] = (in_contact || bridge->active != 0.0) ? 1 : 0;
+  touch = (in_contact || bridge->active != 0.0) ? 1 : 0;
   if (!in_contact) {
     shear[0] = shear[1] = shear[2] = 0.0;
-    if (bridge->active == 0.0) bridge->volume = 0.0;
     if (capillary == 0.0) return;
   }
 
@@ -990,7 +1021,7 @@ void PairGranCapillary::pair_force(int i, int j, int jj, double *history, int *t
     // Richefeu 2007 eqs. 2, 3
     contact = kn[itype][jtype] * (-gap);
     if (gap_rate < 0.0) {
-      const double eta = 2.0 * damping[itype][jtype] * sqrt(meff * kn[itype][jtype]);
+      const double eta = damping_coefficient[itype][jtype] * sqrt(meff);
       contact += eta * (-gap_rate);
     }
 

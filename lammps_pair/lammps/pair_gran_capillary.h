@@ -95,6 +95,7 @@ class PairGranCapillary : public Pair {
  protected:
   // per type pair
   double **kn, **kt, **damping, **mu, **volume, **cut_pair;
+  double **damping_coefficient, **formation_volume;    // derived in init_one
   int **contact_on, **law_of;
   std::vector<std::string> coeff_text;    // the pair_coeff arguments, for restart files
   std::vector<cb_law *> laws;             // prepared laws, shared by type pairs
@@ -133,7 +134,9 @@ class PairGranCapillary : public Pair {
                 double vol, double gap);
   void update_bridges();
   void form_bridges_and_forces();
-  void pair_force(int i, int j, int jj, double *history, int *touch, int history_update);
+  void pair_force(int i, int j, double delx, double dely, double delz, double rsq, double r,
+                  double gap, double capillary, double *history, int &touch,
+                  int history_update);
   void exchange_liquid();
   void check_timestep();
   void radius_ranges();
