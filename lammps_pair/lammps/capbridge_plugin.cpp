@@ -22,7 +22,8 @@ static Fix *capillary_liquid_creator(LAMMPS *lmp, int argc, char **argv)
   return new FixCapillaryLiquid(lmp, argc, argv);
 }
 
-extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
+// the plugin's one exported symbol (the rest of the .so is built with hidden visibility)
+extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
 {
   lammpsplugin_t plugin;
   auto register_plugin = (lammpsplugin_regfunc) regfunc;
