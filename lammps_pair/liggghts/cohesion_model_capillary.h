@@ -15,7 +15,7 @@
    What lives where:
      - the force, the rupture distance, the bridge transitions (form / hold / rupture)
        and Richefeu's Protocol 2 (split of a broken bridge's liquid, take-all at
-       formation) are the core's: cb_force, cb_bridge_update, cb_protocol2_release,
+       formation) are the core's: cb_force, cb_bridge_step, cb_protocol2_release,
        cb_protocol2_take. This file only gathers the engine's data, stores the bridge
        state in LIGGGHTS's contact history and does the MPI communication.
      - the bridge state of a pair {volume, active} is two values of the contact
@@ -329,6 +329,10 @@ namespace ContactModels {
       const double ra = swap ? d.radj : d.radi;
       const double rb = swap ? d.radi : d.radj;
       const cb_law *law = law_for(d.itype, d.jtype);
+      // the force of the bridge's state after this pass: from cb_bridge_step where the
+      // bridge is advanced (one rupture distance for both), else from cb_force below
+      double capillary = 0.0;
+      bool have_force = false;
 
       if (updating_ && (bridge.active != 0.0 || gap <= 0.0)) {
         // (a dry pair that does not touch stays dry: nothing to do)
@@ -336,15 +340,18 @@ namespace ContactModels {
           const double available = bridge_volume_[d.itype][d.jtype];
           cb_transition change = CB_BRIDGE_STAYS_DRY;
           double released = 0.0;
-          check(cb_bridge_update(law, ra, rb, gap, available, &bridge, &change, &released),
+          check(cb_bridge_step(law, ra, rb, gap, available, &bridge, &change, &released,
+                               &capillary),
                 "bridge update", d, gap, bridge.volume);
+          have_force = true;
           if (change == CB_BRIDGE_FORMED) check_reach(law, ra, rb, d.radsum, bridge.volume, d);
           // fixed volume: the liquid of a broken bridge leaves the system
         } else if (bridge.active != 0.0) {
           cb_transition change = CB_BRIDGE_HELD;
           double released = 0.0;
-          check(cb_bridge_update(law, ra, rb, gap, 0.0, &bridge, &change, &released),
+          check(cb_bridge_step(law, ra, rb, gap, 0.0, &bridge, &change, &released, &capillary),
                 "bridge update", d, gap, bridge.volume);
+          have_force = true;
           if (change == CB_BRIDGE_RUPTURED) {
             double share_a = 0.0, share_b = 0.0;
             check(cb_protocol2_release(released, ra, rb, &share_a, &share_b),
@@ -389,9 +396,9 @@ namespace ContactModels {
       }
       // keeps the pair's history through re-neighboring while the bridge exists
       if (d.contact_flags) *d.contact_flags |= CONTACT_COHESION_MODEL;
-      double capillary = 0.0;
-      check(cb_force(law, ra, rb, bridge.volume, gap, &capillary, NULL), "force", d, gap,
-            bridge.volume);
+      if (!have_force)
+        check(cb_force(law, ra, rb, bridge.volume, gap, &capillary, NULL), "force", d, gap,
+              bridge.volume);
       return capillary;
     }
 
@@ -418,8 +425,9 @@ namespace ContactModels {
         bridge.volume = 0.0;
         bridge.active = 0.0;
         cb_transition change = CB_BRIDGE_STAYS_DRY;
-        double released = 0.0;
-        check_at(cb_bridge_update(law, c.ra, c.rb, c.gap, volume, &bridge, &change, &released),
+        double released = 0.0, capillary = 0.0;
+        check_at(cb_bridge_step(law, c.ra, c.rb, c.gap, volume, &bridge, &change, &released,
+                                &capillary),
                  "bridge update", c.i, c.j, c.gap, volume);
         if (change != CB_BRIDGE_FORMED) continue;
         check_reach_at(law, c.ra, c.rb, c.radsum, bridge.volume, c.i, c.j);
@@ -428,9 +436,6 @@ namespace ContactModels {
         if (c.contact_flags) *c.contact_flags |= CONTACT_COHESION_MODEL;
         const bool j_local = c.j < nlocal;
         if (tally_) tally(c.i, j_local ? c.j : -1, bridge.volume);
-        double capillary = 0.0;
-        check_at(cb_force(law, c.ra, c.rb, bridge.volume, c.gap, &capillary, NULL), "force",
-                 c.i, c.j, c.gap, bridge.volume);
         // attraction: i towards j (en points from j to i)
         for (int k3 = 0; k3 < 3; ++k3) {
           f[c.i][k3] -= capillary * c.en[k3];
