@@ -133,7 +133,7 @@ PairGranCapillary::PairGranCapillary(LAMMPS *lmp) : Pair(lmp)
   svector = new double[SV_COUNT];
 
   kn = kt = damping = mu = volume = cut_pair = nullptr;
-  damping_coefficient = formation_volume = nullptr;
+  type_stride = 0;
   contact_on = law_of = nullptr;
   rad_min = rad_max = nullptr;
   friction_wet = 1;
@@ -184,8 +184,6 @@ PairGranCapillary::~PairGranCapillary()
     memory->destroy(mu);
     memory->destroy(volume);
     memory->destroy(cut_pair);
-    memory->destroy(damping_coefficient);
-    memory->destroy(formation_volume);
     memory->destroy(contact_on);
     memory->destroy(law_of);
     delete[] rad_min;
@@ -217,8 +215,6 @@ void PairGranCapillary::allocate()
   memory->create(mu, n + 1, n + 1, "pair:mu");
   memory->create(volume, n + 1, n + 1, "pair:volume");
   memory->create(cut_pair, n + 1, n + 1, "pair:cut_pair");
-  memory->create(damping_coefficient, n + 1, n + 1, "pair:damping_coefficient");
-  memory->create(formation_volume, n + 1, n + 1, "pair:formation_volume");
   memory->create(contact_on, n + 1, n + 1, "pair:contact_on");
   memory->create(law_of, n + 1, n + 1, "pair:law_of");
   for (int i = 0; i <= n; i++)
@@ -226,7 +222,7 @@ void PairGranCapillary::allocate()
       setflag[i][j] = 0;
       kn[i][j] = kt[i][j] = damping[i][j] = mu[i][j] = 0.0;
       volume[i][j] = -1.0;
-      cut_pair[i][j] = damping_coefficient[i][j] = formation_volume[i][j] = 0.0;
+      cut_pair[i][j] = 0.0;
       contact_on[i][j] = 0;
       law_of[i][j] = -1;
     }
@@ -411,10 +407,6 @@ void PairGranCapillary::init_style()
     error->all(FLERR, "Pair gran/capillary requires ghost atoms store velocity "
                "(comm_modify vel yes)");
 
-  // a plain half list reaching the type-pair cutoff (init_one): bridges act beyond
-  // contact, so the list must hold every pair up to the largest rupture distance
-  neighbor->add_request(this, NeighConst::REQ_HISTORY);
-
   dt = update->dt;
 
   if (fix_history == nullptr) {
@@ -467,6 +459,22 @@ void PairGranCapillary::init_style()
                        fix_liquid->mode_name(), law_text[first], law_text[law_of[i][j]]);
         }
   }
+
+  // The neighbor list. With liquid: a plain half list reaching the type-pair cutoff
+  // (init_one), since bridges act beyond contact and the list must hold every pair up to
+  // the largest rupture distance. Without (no type pair can hold a bridge): the per-pair
+  // size list of LAMMPS's dry granular styles, cut at R_i + R_j + skin, so that a dry scene
+  // pays for its contacts only.
+  int bridges_possible = 0;
+  for (int i = 1; i <= n; i++)
+    for (int j = i; j <= n; j++)
+      if (setflag[i][j] &&
+          (liquid_mode == LIQUID_FIXED ? design_volume(i, j) > 0.0 : volume[i][j] != 0.0))
+        bridges_possible = 1;
+  if (bridges_possible)
+    neighbor->add_request(this, NeighConst::REQ_HISTORY);
+  else
+    neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_HISTORY);
 
   // per-atom liquid exchange within a force evaluation (Protocols 2, 3)
   if (liquid_mode == LIQUID_PROTOCOL2 || liquid_mode == LIQUID_PROTOCOL3) {
@@ -585,11 +593,20 @@ double PairGranCapillary::init_one(int i, int j)
   contact_on[j][i] = contact_on[i][j];
   law_of[j][i] = law_of[i][j];
   cut_pair[i][j] = cut_pair[j][i] = cut;
-  // per type pair, once: the dashpot's 2 alpha sqrt(k_n) (times sqrt(m) per contact), and
-  // the volume a new bridge gets at contact in liquid mode fixed (0: none forms here)
-  damping_coefficient[i][j] = damping_coefficient[j][i] = 2.0 * damping[i][j] * sqrt(kn[i][j]);
-  formation_volume[i][j] = formation_volume[j][i] =
-      liquid_mode == LIQUID_FIXED ? design_volume(i, j) : 0.0;
+  // the pair loops' constants (init() calls init_one for every pair before a run)
+  type_stride = atom->ntypes + 1;
+  type_pairs.resize((size_t) type_stride * type_stride);
+  TypePair tp;
+  tp.kn = kn[i][j];
+  tp.kt = kt[i][j];
+  tp.mu = mu[i][j];
+  tp.damping_coefficient = 2.0 * damping[i][j] * sqrt(kn[i][j]);
+  tp.formation_volume = liquid_mode == LIQUID_FIXED ? design_volume(i, j) : 0.0;
+  tp.volume = volume[i][j];
+  tp.cutsq = cut * cut;
+  tp.law = law(i, j);
+  tp.contact_on = contact_on[i][j];
+  type_pairs[i * type_stride + j] = type_pairs[j * type_stride + i] = tp;
   return cut;
 }
 
@@ -651,9 +668,9 @@ int PairGranCapillary::counted(int i, int j) const
   return atom->tag[i] < atom->tag[j];
 }
 
-int PairGranCapillary::wet_pair(int i, int j, int itype, int jtype) const
+int PairGranCapillary::wet_pair(int i, int j, const TypePair &tp) const
 {
-  if (volume[itype][jtype] == 0.0) return 0;
+  if (tp.volume == 0.0) return 0;
   if (fix_liquid) {
     int *mask = atom->mask;
     if (!(mask[i] & liquid_groupbit) || !(mask[j] & liquid_groupbit)) return 0;
@@ -768,13 +785,13 @@ void PairGranCapillary::update_bridges()
       if (bridge->active != 0.0) {
         double vol = 0.0;
         cb_transition transition;
-        int status = cb_bridge_update(law(itype, jtype), radius[i], radius[j], gap, 0.0,
+        int status = cb_bridge_update(type_pair(itype, jtype).law, radius[i], radius[j], gap, 0.0,
                                       bridge, &transition, &vol);
         check_cb(status, "bridge update", itype, jtype, radius[i], radius[j],
                  bridge->volume, gap);
         if (transition != CB_BRIDGE_RUPTURED) {
           vol = 0.0;
-          if (rsq >= cutsq[itype][jtype]) {
+          if (rsq >= type_pair(itype, jtype).cutsq) {
             // held beyond the reach (a volume above the one the reach was built for):
             // ruptured here, before the pair leaves the neighbor list with its liquid
             vol = bridge->volume;
@@ -807,7 +824,7 @@ void PairGranCapillary::update_bridges()
             }
           }
         }
-      } else if (gap <= 0.0 && wet_pair(i, j, itype, jtype)) {
+      } else if (gap <= 0.0 && wet_pair(i, j, type_pair(itype, jtype))) {
         candidates[i] += 1.0;
         if (newton_pair || j < nlocal) candidates[j] += 1.0;
       }
@@ -867,8 +884,19 @@ void PairGranCapillary::exchange_liquid()
 void PairGranCapillary::form_bridges_and_forces()
 {
   const int history_update = update->setupflag ? 0 : 1;
-  double **x = atom->x;
-  double *radius = atom->radius;
+  AtomArrays a;
+  a.x = atom->x;
+  a.v = atom->v;
+  a.f = atom->f;
+  a.omega = atom->omega;
+  a.torque = atom->torque;
+  a.radius = atom->radius;
+  a.rmass = atom->rmass;
+  a.mask = atom->mask;
+  a.nlocal = atom->nlocal;
+  a.newton_pair = force->newton_pair;
+  double **x = a.x;
+  double *radius = a.radius;
   int *type = atom->type;
   tagint *tag = atom->tag;
   double *special = force->special_lj;
@@ -910,12 +938,13 @@ void PairGranCapillary::form_bridges_and_forces()
       }
       const double r = sqrt(rsq);
       const double gap = r - radsum;
-      const cb_law *pair_law = law(itype, jtype);
+      const TypePair &tp = type_pair(itype, jtype);
+      const cb_law *pair_law = tp.law;
       double capillary = 0.0;
       if (per_atom) {
         // the bridges were advanced in update_bridges(): here they form, or give their force
         if (bridge->active == 0.0) {
-          if (gap <= 0.0 && wet_pair(i, j, itype, jtype)) {
+          if (gap <= 0.0 && wet_pair(i, j, tp)) {
             double offer_i = offer[i], offer_j = offer[j], available = 0.0;
             int status = cb_protocol2_take(&offer_i, &offer_j, &available);
             check_cb(status, "liquid take", itype, jtype, radius[i], radius[j], available, gap);
@@ -940,9 +969,9 @@ void PairGranCapillary::form_bridges_and_forces()
                    bridge->volume, gap);
         }
       } else if (bridge->active != 0.0 ||
-                 (formation_volume[itype][jtype] > 0.0 && wet_pair(i, j, itype, jtype))) {
+                 (tp.formation_volume > 0.0 && wet_pair(i, j, tp))) {
         // a bridge to advance, or one to form (dry pairs that cannot get one skip the core)
-        const double available = bridge->active != 0.0 ? 0.0 : formation_volume[itype][jtype];
+        const double available = bridge->active != 0.0 ? 0.0 : tp.formation_volume;
         double vol = 0.0;
         cb_transition transition;
         const double before = bridge->volume;
@@ -953,7 +982,7 @@ void PairGranCapillary::form_bridges_and_forces()
         if (transition == CB_BRIDGE_FORMED && counted(i, j)) n_formed += 1.0;
         if (transition == CB_BRIDGE_RUPTURED && counted(i, j)) n_ruptured += 1.0;
         if (transition != CB_BRIDGE_RUPTURED) vol = 0.0;
-        if (bridge->active != 0.0 && rsq >= cutsq[itype][jtype]) {
+        if (bridge->active != 0.0 && rsq >= tp.cutsq) {
           // held beyond the reach (a volume above the one the reach was built for):
           // ruptured here, before the pair leaves the neighbor list with its liquid
           vol = bridge->volume;
@@ -966,7 +995,7 @@ void PairGranCapillary::form_bridges_and_forces()
         }
         if (vol > 0.0 && liquid_mode == LIQUID_PROTOCOL1 && counted(i, j)) pool_released += vol;
       }
-      pair_force(i, j, delx, dely, delz, rsq, r, gap, capillary, history, touch[jj],
+      pair_force(a, tp, i, j, delx, dely, delz, rsq, r, gap, capillary, history, touch[jj],
                  history_update);
     }
   }
@@ -977,26 +1006,24 @@ void PairGranCapillary::form_bridges_and_forces()
    caller with the bridge's update); keeps the history flag
 ------------------------------------------------------------------------- */
 
-void PairGranCapillary::pair_force(int i, int j, double delx, double dely, double delz,
-                                   double rsq, double r, double gap, double capillary,
-                                   double *history, int &touch, int history_update)
+void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int i, int j,
+                                   double delx, double dely, double delz, double rsq, double r,
+                                   double gap, double capillary, double *history, int &touch,
+                                   int history_update)
 {
-  double **v = atom->v;
-  double **f = atom->f;
-  double **omega = atom->omega;
-  double **torque = atom->torque;
-  double *radius = atom->radius;
-  double *rmass = atom->rmass;
-  int *mask = atom->mask;
-  int *type = atom->type;
-  const int nlocal = atom->nlocal;
-  const int newton_pair = force->newton_pair;
-  const int itype = type[i], jtype = type[j];
-  const double radi = radius[i], radj = radius[j];
+  double **v = a.v;
+  double **f = a.f;
+  double **omega = a.omega;
+  double **torque = a.torque;
+  double *rmass = a.rmass;
+  int *mask = a.mask;
+  const int nlocal = a.nlocal;
+  const int newton_pair = a.newton_pair;
+  const double radi = a.radius[i], radj = a.radius[j];
   cb_bridge *bridge = bridge_of(history);
   double *shear = &history[HIST_SHEAR];
 
-  const int in_contact = contact_on[itype][jtype] && gap < 0.0;
+  const int in_contact = tp.contact_on && gap < 0.0;
   touch = (in_contact || bridge->active != 0.0) ? 1 : 0;
   if (!in_contact) {
     shear[0] = shear[1] = shear[2] = 0.0;
@@ -1019,9 +1046,9 @@ void PairGranCapillary::pair_force(int i, int j, double delx, double dely, doubl
     if (mask[j] & freeze_group_bit) meff = mi;
 
     // Richefeu 2007 eqs. 2, 3
-    contact = kn[itype][jtype] * (-gap);
+    contact = tp.kn * (-gap);
     if (gap_rate < 0.0) {
-      const double eta = damping_coefficient[itype][jtype] * sqrt(meff);
+      const double eta = tp.damping_coefficient * sqrt(meff);
       contact += eta * (-gap_rate);
     }
 
@@ -1047,12 +1074,12 @@ void PairGranCapillary::pair_force(int i, int j, double delx, double dely, doubl
       shear[1] -= normal_part * dely;
       shear[2] -= normal_part * delz;
     }
-    const double k_t = kt[itype][jtype];
+    const double k_t = tp.kt;
     fs1 = -k_t * shear[0];
     fs2 = -k_t * shear[1];
     fs3 = -k_t * shear[2];
     const double fs = sqrt(fs1 * fs1 + fs2 * fs2 + fs3 * fs3);
-    const double limit = mu[itype][jtype] * (contact + (friction_wet ? capillary : 0.0));
+    const double limit = tp.mu * (contact + (friction_wet ? capillary : 0.0));
     if (fs > limit) {
       const double scale = fs > 0.0 ? limit / fs : 0.0;
       if (history_update) {
@@ -1362,7 +1389,7 @@ int PairGranCapillary::protocol1(double total_liquid, double &alpha, double &lar
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = list->firstneigh[i][jj] & NEIGHMASK;
       const int itype = type[i], jtype = type[j];
-      if (!wet_pair(i, j, itype, jtype)) continue;
+      if (!wet_pair(i, j, type_pair(itype, jtype))) continue;
       const double delx = x[i][0] - x[j][0];
       const double dely = x[i][1] - x[j][1];
       const double delz = x[i][2] - x[j][2];

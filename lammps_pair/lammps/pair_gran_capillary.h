@@ -95,11 +95,36 @@ class PairGranCapillary : public Pair {
  protected:
   // per type pair
   double **kn, **kt, **damping, **mu, **volume, **cut_pair;
-  double **damping_coefficient, **formation_volume;    // derived in init_one
   int **contact_on, **law_of;
   std::vector<std::string> coeff_text;    // the pair_coeff arguments, for restart files
   std::vector<cb_law *> laws;             // prepared laws, shared by type pairs
   std::vector<std::string> law_text;      // the law specification of each law
+
+  // The constants of the pair loops for one type pair, derived in init_one: one cache line
+  // per pair instead of a pointer chase per coefficient.
+  struct TypePair {
+    double kn, kt, mu;
+    double damping_coefficient;    // 2 alpha sqrt(k_n): the dashpot is this times sqrt(m_eff)
+    double formation_volume;       // a new bridge's volume in liquid mode fixed (0: none forms)
+    double volume;                 // the pair_coeff volume (0: never a bridge)
+    double cutsq;                  // the neighbor cutoff squared
+    const cb_law *law;
+    int contact_on;
+  };
+  std::vector<TypePair> type_pairs;    // [itype * (ntypes + 1) + jtype]
+  int type_stride;
+  const TypePair &type_pair(int itype, int jtype) const
+  {
+    return type_pairs[itype * type_stride + jtype];
+  }
+  // The per-atom arrays of one force evaluation, read once per compute() (through `atom` the
+  // compiler must reload them after every force store).
+  struct AtomArrays {
+    double **x, **v, **f, **omega, **torque;
+    double *radius, *rmass;
+    int *mask;
+    int nlocal, newton_pair;
+  };
 
   int friction_wet;    // 1: Coulomb limit mu (f_contact + f_capillary); 0: mu f_contact
   double dt;
@@ -129,14 +154,14 @@ class PairGranCapillary : public Pair {
   void grow_scratch();
   const cb_law *law(int itype, int jtype) const { return laws[law_of[itype][jtype]]; }
   int counted(int i, int j) const;
-  int wet_pair(int i, int j, int itype, int jtype) const;
+  int wet_pair(int i, int j, const TypePair &tp) const;
   void check_cb(int status, const char *what, int itype, int jtype, double r1, double r2,
                 double vol, double gap);
   void update_bridges();
   void form_bridges_and_forces();
-  void pair_force(int i, int j, double delx, double dely, double delz, double rsq, double r,
-                  double gap, double capillary, double *history, int &touch,
-                  int history_update);
+  void pair_force(const AtomArrays &a, const TypePair &tp, int i, int j, double delx,
+                  double dely, double delz, double rsq, double r, double gap, double capillary,
+                  double *history, int &touch, int history_update);
   void exchange_liquid();
   void check_timestep();
   void radius_ranges();
