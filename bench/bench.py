@@ -1,0 +1,342 @@
+#!/usr/bin/python3
+"""capbridge benchmarks (issue 6): every figure is a ratio or a curve measured in one run of
+this command on one machine; the two sides of a comparison alternate (the order rotates from
+one repeat to the next) and the ratio of each repeat is formed before the median, so that a
+slow phase of a shared machine falls on both sides. Nothing here is a test: no time is
+asserted anywhere.
+
+  1  LAMMPS: gran/capillary with bridges (law richefeu) and with no liquid, against LAMMPS's
+     own dry gran/hooke/history, on the cyclic compression scene (bench/in.cycle.lammps)
+  2  LIGGGHTS: cohesion capillary against LIGGGHTS's own easo/capillary/viscous on the same
+     scene (bench/in.cycle.liggghts)
+  3  MPI: the default split-bottom scene (first 0.2 s of rotation) on 1 and 2 ranks, and the
+     time per particle-step of the cyclic compression scene (wet) from 2 000 to 64 000 grains
+  4  the cost of each law per force call (capbridge bench) and the uniaxial compression
+     strength (smoke size, LAMMPS, 2 ranks) against wall time as the time step goes from
+     1/10 to 1/100 of the contact time
+
+Usage: bench/run.sh [--parts 1,2,3,4] [--repeats N] [--quick]
+  --quick: smaller scenes and fewer points (a check that the benchmark runs, ~5 min)
+Writes out/bench/part<N>.md and assembles bench/README.md from bench/README.head.md and every
+part measured so far (each part states its own date, machine and command).
+"""
+import argparse
+import datetime
+import importlib.util
+import os
+import platform
+import statistics
+import subprocess
+import sys
+
+import engines
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+TOP = os.path.dirname(HERE)
+OUT = os.path.join(TOP, "out", "bench")
+PLUGIN = os.path.join(TOP, "build", "lammps_pair", "lammps", "capbridgeplugin.so")
+CLI = os.path.join(TOP, "build", "src_c", "cli", "capbridge")
+
+
+def machine():
+    model = "unknown CPU"
+    if os.path.isfile("/proc/cpuinfo"):
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    model = line.split(":", 1)[1].strip()
+                    break
+    load = os.getloadavg()[0]
+    return (f"{model}, {os.cpu_count()} cores, {platform.system()} {platform.release()}; "
+            f"load average {load:.2f} at the start of the part")
+
+
+def alternate(sides, repeats, run_side):
+    """Runs every side `repeats` times, the order rotating each repeat; returns
+    {side: [Loop, ...]} in repeat order."""
+    names = list(sides)
+    times = {name: [] for name in names}
+    for r in range(repeats):
+        order = names[r % len(names):] + names[:r % len(names)]
+        for name in order:
+            loop = run_side(name, sides[name], r)
+            times[name].append(loop)
+            print(f"  repeat {r + 1}/{repeats} {name}: {loop.seconds:.2f} s, "
+                  f"{loop.us_per_particle_step():.3f} us per particle-step", flush=True)
+    return times
+
+
+def ratio_stats(times, side, reference):
+    """Median, min and max over the repeats of time(side) / time(reference)."""
+    ratios = [a.seconds / b.seconds for a, b in zip(times[side], times[reference])]
+    return statistics.median(ratios), min(ratios), max(ratios)
+
+
+def median_us(loops):
+    return statistics.median(l.us_per_particle_step() for l in loops)
+
+
+def header(part, title, command):
+    return (f"## {part}. {title}\n\nMeasured {datetime.datetime.now():%Y-%m-%d %H:%M} on "
+            f"{machine()}.\nCommand: `{command}`\n\n")
+
+
+def base_packing(ctx):
+    """The jammed 2000-grain packing both engines' cycle decks read (made once)."""
+    data = os.path.join(OUT, "base.data")
+    if not os.path.isfile(data):
+        print("bench: preparing the base packing (2000 grains, LAMMPS, ~10 s)", flush=True)
+        engines.run(ctx.lammps, 1, os.path.join(HERE, "in.cycle.lammps"), OUT, "prep.log",
+                    {"stage": "prep", "data": data})
+    return data
+
+
+# ---------------------------------------------------------------------------------------------
+def part1(ctx):
+    copies = (2, 2, 1) if ctx.quick else (2, 2, 2)
+    data = base_packing(ctx)
+    sides = {
+        "stock": {"side": "stock"},
+        "off": {"side": "off", "plugin": PLUGIN},
+        "wet": {"side": "wet", "plugin": PLUGIN},
+    }
+
+    def run_side(name, variables, r):
+        work = os.path.join(OUT, "part1")
+        log = engines.run(ctx.lammps, 1, os.path.join(HERE, "in.cycle.lammps"), work,
+                          f"{name}.{r}.log", dict(variables, data=data, nx=copies[0],
+                                                  ny=copies[1], nz=copies[2], steps=2000))
+        return engines.loops(log)[-1]
+
+    times = alternate(sides, ctx.repeats, run_side)
+    wet = ratio_stats(times, "wet", "stock")
+    off = ratio_stats(times, "off", "stock")
+    n = times["stock"][0].atoms
+    text = header(1, "Wet and dry against LAMMPS's own dry contact", ctx.command)
+    text += (f"Scene: bench/in.cycle.lammps, {n} grains (1.0 and 1.2 mm, jammed, periodic), "
+             f"2000 steps = one compression cycle of 3 %, 1 rank; {ctx.repeats} repeats, the "
+             "three sides alternating.\n\n"
+             "| side | pair style | us per particle-step (median) | time / stock: median (min-max) "
+             "| target |\n|---|---|---:|---:|---|\n"
+             f"| stock | gran/hooke/history (dry) | {median_us(times['stock']):.3f} | 1 | |\n"
+             f"| off | gran/capillary, volume 0 | {median_us(times['off']):.3f} | "
+             f"**{off[0]:.3f}** ({off[1]:.3f}-{off[2]:.3f}) | <= 1.02 |\n"
+             f"| wet | gran/capillary, law richefeu, 1e-11 m^3 on every contact | "
+             f"{median_us(times['wet']):.3f} | **{wet[0]:.3f}** ({wet[1]:.3f}-{wet[2]:.3f}) | "
+             "<= 1.10 (aim 1.05) |\n\n")
+    summary = (f"LAMMPS, {n} grains: wet / stock dry **{wet[0]:.2f}** (target 1.10), "
+               f"liquid off / stock dry **{off[0]:.3f}** (target 1.02)")
+    return text, summary
+
+
+def part2(ctx):
+    copies = (2, 1, 1) if ctx.quick else (2, 2, 1)
+    data = base_packing(ctx)
+    sides = ["easo", "soulie", "protocol2", "richefeu", "dry"]
+
+    def run_side(name, side, r):
+        work = os.path.join(OUT, "part2")
+        log = engines.run(ctx.liggghts, 1, os.path.join(HERE, "in.cycle.liggghts"), work,
+                          f"{name}.{r}.log", {"bench": HERE, "data": data, "side": side,
+                                              "nx": copies[0], "ny": copies[1], "nz": copies[2],
+                                              "steps": 2000})
+        return engines.loops(log)[-1]
+
+    times = alternate({s: s for s in sides}, ctx.repeats, run_side)
+    n = times["easo"][0].atoms
+    text = header(2, "Against LIGGGHTS's own capillary model", ctx.command)
+    text += (f"Scene: bench/in.cycle.liggghts (the LAMMPS scene in LIGGGHTS 3.8.0, contact model "
+             f"hooke/stiffness with tangential history), {n} grains, 2000 steps, 1 rank; "
+             f"{ctx.repeats} repeats, the five sides alternating. Target: capbridge's time per "
+             "particle-step no higher than easo/capillary/viscous's (ratio <= 1).\n\n"
+             "| side | cohesion model | us per particle-step (median) | time / easo: median "
+             "(min-max) |\n|---|---|---:|---:|\n")
+    models = {
+        "easo": "easo/capillary/viscous (per-particle liquid, Soulie's law, viscous off)",
+        "soulie": "capillary law soulie rupture lian (the same law), fixed volume",
+        "protocol2": "capillary law soulie, liquid protocol2 (per-particle liquid, as easo)",
+        "richefeu": "capillary law richefeu, fixed volume",
+        "dry": "none (the contact model alone)",
+    }
+    for side in sides:
+        cell = "1"
+        if side != "easo":
+            med, lo, hi = ratio_stats(times, side, "easo")
+            cell = f"**{med:.3f}** ({lo:.3f}-{hi:.3f})"
+        text += f"| {side} | {models[side]} | {median_us(times[side]):.3f} | {cell} |\n"
+    text += "\n"
+    soulie = ratio_stats(times, "soulie", "easo")[0]
+    protocol2 = ratio_stats(times, "protocol2", "easo")[0]
+    summary = (f"LIGGGHTS, {n} grains: capbridge / easo/capillary/viscous **{soulie:.2f}** "
+               f"(same law, fixed volume), **{protocol2:.2f}** (Protocol 2) (target <= 1)")
+    return text, summary
+
+
+def part3(ctx):
+    split = os.path.join(TOP, "inputs", "split_bottom")
+
+    def run_ranks(name, ranks, r):
+        work = os.path.join(OUT, "part3", f"split_bottom-np{ranks}-{r}")
+        log = engines.run(ctx.lammps, ranks, os.path.join(split, "in.lammps"), work,
+                          "log.lammps", {"size": "smoke" if ctx.quick else "default",
+                                         "inputs": split, "plugin": PLUGIN,
+                                         "tshear": 0.2, "tavg": 0.2})
+        return engines.loops(log)[1]  # the rotation (settling is loops[0])
+
+    times = alternate({"1": 1, "2": 2}, ctx.repeats, run_ranks)
+    t1, t2 = median_us(times["1"]), median_us(times["2"])
+    speedups = [a.seconds / b.seconds for a, b in zip(times["1"], times["2"])]
+    speedup = statistics.median(speedups)
+    n = times["1"][0].atoms
+    steps = times["1"][0].steps
+    text = header(3, "MPI: parallel efficiency and growth with N", ctx.command)
+    text += (f"Split-bottom cell, size {'smoke' if ctx.quick else 'default'} (LAMMPS, law "
+             f"willett, 13.6 nl, {n} atoms with the wall grains), the first 0.2 s of rotation "
+             f"({steps} steps) timed after the settling; {ctx.repeats} repeats, 1 and 2 ranks "
+             "alternating.\n\n| ranks | us per particle-step (wall, median) |\n|---:|---:|\n"
+             f"| 1 | {t1:.3f} |\n| 2 | {t2:.3f} |\n\n"
+             f"Speed-up 2 ranks / 1 rank: **{speedup:.2f}** (min {min(speedups):.2f}, max "
+             f"{max(speedups):.2f}): parallel efficiency **{100 * speedup / 2:.0f} %**.\n\n")
+
+    data = base_packing(ctx)
+    grids = [(1, 1, 1), (2, 1, 1), (2, 2, 1), (2, 2, 2)]
+    if not ctx.quick:
+        grids += [(4, 2, 2), (4, 4, 2)]
+    text += ("Cyclic compression scene, wet (gran/capillary, law richefeu), the base packing "
+             "replicated; 1000 steps (half a cycle), 2 ranks, one run per size:\n\n"
+             "| grains | us per particle-step (wall) | relative to 2 000 grains |\n|---:|---:|---:|\n")
+    first = None
+    for nx, ny, nz in grids:
+        work = os.path.join(OUT, "part3", f"cycle-{nx}{ny}{nz}")
+        log = engines.run(ctx.lammps, 2, os.path.join(HERE, "in.cycle.lammps"), work,
+                          "log.lammps", {"side": "wet", "plugin": PLUGIN, "data": data,
+                                         "nx": nx, "ny": ny, "nz": nz, "steps": 1000})
+        loop = engines.loops(log)[-1]
+        us = loop.us_per_particle_step()
+        first = first or us
+        print(f"  {loop.atoms} grains: {us:.3f} us per particle-step", flush=True)
+        text += f"| {loop.atoms} | {us:.3f} | {us / first:.2f} |\n"
+    text += "\n"
+    summary = (f"MPI: split-bottom {'smoke' if ctx.quick else 'default'} 2 ranks / 1 rank "
+               f"speed-up **{speedup:.2f}** ({100 * speedup / 2:.0f} % efficiency)")
+    return text, summary
+
+
+def uniaxial_post():
+    """inputs/uniaxial/post.py, for its strength definition (one place for it)."""
+    path = os.path.join(TOP, "inputs", "uniaxial", "post.py")
+    spec = importlib.util.spec_from_file_location("uniaxial_post", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def part4(ctx):
+    text = header(4, "Cost per law and accuracy against run time", ctx.command)
+    cost = subprocess.run([CLI, "bench"], check=True, stdout=subprocess.PIPE, text=True).stdout
+    rows = [line.split(",") for line in cost.strip().splitlines()[1:]]
+    text += ("Per force call (`capbridge bench`, one run, laws interleaved: 4096 pairs with size "
+             "ratios 1-10 and volumes 1e-5 to 0.1 R_h^3 at uniform fractions of the rupture "
+             "distance, water, theta = 0; process CPU time):\n\n| law | ns per call | / cheapest closed form |\n"
+             "|---|---:|---:|\n")
+    text += "".join(f"| {law} | {ns} | {ratio} |\n" for law, ns, ratio in rows)
+
+    post = uniaxial_post()
+    fractions = [0.1, 0.05] if ctx.quick else [0.1, 0.05, 0.025, 0.01]
+    deck_dir = os.path.join(TOP, "inputs", "uniaxial")
+    results = []
+    for frac in fractions:
+        work = os.path.join(OUT, "part4", f"uniaxial-dt{frac:g}")
+        log = engines.run(ctx.lammps, 2, os.path.join(deck_dir, "in.lammps"), work,
+                          "log.lammps", {"size": "smoke", "inputs": deck_dir, "plugin": PLUGIN,
+                                         "dtfrac": frac})
+        wall = sum(l.seconds for l in engines.loops(log))
+        sigma = post.strength(post.read_curve(work)[:, 3])
+        print(f"  dt = t_c x {frac:g}: sigma_rupt {sigma:.1f} Pa, {wall:.0f} s", flush=True)
+        results.append((frac, sigma, wall))
+    reference = results[-1][1]
+    text += ("\nUniaxial compression, smoke size (600 spheres, w = 2 %, Protocol 1, LAMMPS, 2 "
+             "ranks), the whole run (preparation and compression) at time steps from 1/10 to "
+             f"1/{round(1 / fractions[-1])} of the contact time pi sqrt(m_min/k_n); error "
+             "against the smallest step. The sample is prepared anew in each run (the pour "
+             "depends on the time step), so the error includes the sample-to-sample scatter "
+             "of a 600-sphere sample.\n\n| dt / t_c | sigma_rupt [Pa] | error | wall time [s] |"
+             "\n|---:|---:|---:|---:|\n")
+    for frac, sigma, wall in results:
+        text += (f"| 1/{round(1 / frac)} | {sigma:.1f} | {100 * (sigma - reference) / reference:+.1f} % "
+                 f"| {wall:.0f} |\n")
+    text += ("\nNo mass scaling: Richefeu 2007 runs the compression quasi-statically at the "
+             "grains' real density, and the sample's relaxation under gravity before the "
+             "compression (part of the scene) depends on it.\n\n")
+    table = next(r for r in rows if r[0] == "table")
+    summary = (f"laws: {min(float(r[1]) for r in rows):.0f}-{max(float(r[1]) for r in rows):.0f} "
+               f"ns per call, table {table[2]} x the cheapest; uniaxial smoke at dt = t_c/10: "
+               f"{100 * (results[0][1] - reference) / reference:+.1f} % in "
+               f"{results[0][2] / results[-1][2]:.2f} of the time of t_c/{round(1 / fractions[-1])}")
+    return text, summary
+
+
+PARTS = {1: part1, 2: part2, 3: part3, 4: part4}
+
+
+def assemble():
+    """bench/README.md: the head, then every part measured so far, then their summaries."""
+    with open(os.path.join(HERE, "README.head.md")) as f:
+        text = f.read()
+    summaries = []
+    for part in sorted(PARTS):
+        path = os.path.join(OUT, f"part{part}.md")
+        if os.path.isfile(path):
+            with open(path) as f:
+                body = f.read()
+            text += "\n" + body.split("\n<!-- summary: ")[0]
+            summaries.append(body.split("\n<!-- summary: ")[1].split(" -->")[0])
+    text += "\n## Summary\n\n" + "".join(f"- {s}\n" for s in summaries)
+    with open(os.path.join(HERE, "README.md"), "w") as f:
+        f.write(text)
+    return summaries
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--parts", default="1,2,3,4")
+    parser.add_argument("--repeats", type=int, default=None)
+    parser.add_argument("--quick", action="store_true")
+    args = parser.parse_args()
+    try:
+        parts = [int(p) for p in args.parts.split(",")]
+    except ValueError:
+        engines.fail(f"--parts takes numbers from 1 to 4 separated by commas, not '{args.parts}'")
+    if any(p not in PARTS for p in parts):
+        engines.fail(f"--parts: unknown part in '{args.parts}' (allowed: 1, 2, 3, 4)")
+    if args.repeats is not None and args.repeats < 1:
+        engines.fail(f"--repeats must be >= 1, not {args.repeats}")
+    for path in (PLUGIN, CLI):
+        if not os.path.isfile(path):
+            engines.fail(f"no {path}: run scripts/configure.sh first")
+    cache = os.environ.get("CAPBRIDGE_CACHE", os.path.join(os.path.expanduser("~"), ".cache",
+                                                           "capbridge"))
+    lammps, liggghts = engines.engines(cache)
+
+    class Context:
+        pass
+    ctx = Context()
+    ctx.quick = args.quick
+    ctx.repeats = args.repeats or (2 if args.quick else 5)
+    ctx.command = "bench/run.sh " + " ".join(sys.argv[1:])
+    ctx.lammps = (lammps["LAMMPS_MPIRUN"], [lammps["LAMMPS_BINARY"], "-nocite"])
+    ctx.liggghts = (liggghts["LIGGGHTS_MPIRUN"], [liggghts["LIGGGHTS_BINARY"]])
+    os.makedirs(OUT, exist_ok=True)
+    for part in parts:
+        print(f"bench: part {part}", flush=True)
+        text, summary = PARTS[part](ctx)
+        with open(os.path.join(OUT, f"part{part}.md"), "w") as f:
+            f.write(text + f"\n<!-- summary: {summary} -->\n")
+        print(text, flush=True)
+    for line in assemble():
+        print("bench: " + line)
+    print(f"bench: wrote {os.path.join(HERE, 'README.md')}")
+
+
+if __name__ == "__main__":
+    main()
