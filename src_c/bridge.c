@@ -36,11 +36,11 @@ static cb_status check_state(const cb_bridge *bridge)
     return CB_ERR_RANGE;
 }
 
-/* The next state of a bridge (both public calls below). When the bridge exists after the
- * step and is stretched (gap > 0), formed now, or want_rupture is set, *pair is made for
- * its volume and *rupture is its rupture distance (else *rupture is 0). */
+/* The next state of a bridge (both public calls below). *pair is made for the bridge's
+ * volume when it is stretched (gap > 0) or formed now, then with *rupture its rupture
+ * distance (else *rupture is 0), and when want_pair is set. */
 static cb_status advance(const cb_law *law, double r1, double r2, double gap,
-                         double available_volume, const cb_bridge *bridge, int want_rupture,
+                         double available_volume, const cb_bridge *bridge, int want_pair,
                          cb_bridge *next, cb_transition *change, double *released,
                          cb_pair *pair, double *rupture)
 {
@@ -56,10 +56,9 @@ static cb_status advance(const cb_law *law, double r1, double r2, double gap,
     *rupture = 0.0;
     if (bridge->active == 1.0) {
         *change = CB_BRIDGE_HELD;
-        /* In overlap the rupture distance (> 0) cannot be exceeded: evaluated only when
-         * asked for (the force needs it). */
-        if (gap > 0.0 || want_rupture) {
-            *pair = cb_pair_make(law, r1, r2, bridge->volume);
+        /* In contact the rupture distance (> 0) cannot be exceeded: not evaluated. */
+        if (gap > 0.0 || want_pair) *pair = cb_pair_make(law, r1, r2, bridge->volume);
+        if (gap > 0.0) {
             status = cb_pair_rupture(law, pair, rupture);
             if (status != CB_OK) return status;
             if (gap > *rupture) {

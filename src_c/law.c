@@ -347,6 +347,14 @@ cb_status cb_pair_force(const cb_law *law, const cb_pair *pair, double rupture, 
                         double *force, double *stiffness)
 {
     cb_status status = CB_OK;
+    if (law->validity == CB_VALIDITY_STRICT && !inside_validity(law, pair))
+        return CB_ERR_OUT_OF_VALIDITY;
+    /* The rupture distance (> 0) matters only for a stretched bridge: a bridge in contact
+     * or overlap never needs its root (the common case of a dense packing). */
+    if (gap > 0.0 && !(rupture > 0.0)) {
+        status = cb_pair_rupture(law, pair, &rupture);
+        if (status != CB_OK) return status;
+    }
     double f = 0.0, df = 0.0;
     if (gap < 0.0) {
         /* Overlap: Richefeu eq. 10 keeps the contact value (continuous); Gladkyy eq. 4
@@ -355,7 +363,7 @@ cb_status cb_pair_force(const cb_law *law, const cb_pair *pair, double rupture, 
             status = model_forces[law->model](law, pair, 0.0, &f, &df);
             df = 0.0;
         }
-    } else if (gap <= rupture) {
+    } else if (gap == 0.0 || gap <= rupture) {
         status = model_forces[law->model](law, pair, gap, &f, &df);
     }
     if (status != CB_OK) return status;
@@ -373,10 +381,7 @@ cb_status cb_force(const cb_law *law, double r1, double r2, double volume, doubl
     if (!force) return CB_ERR_NULL;
     if (!isfinite(gap)) return CB_ERR_NOT_FINITE;
     cb_pair pair = cb_pair_make(law, r1, r2, volume);
-    double rupture = 0.0;
-    status = cb_pair_rupture(law, &pair, &rupture);
-    if (status != CB_OK) return status;
-    return cb_pair_force(law, &pair, rupture, gap, force, stiffness);
+    return cb_pair_force(law, &pair, 0.0, gap, force, stiffness);
 }
 
 /* |dF/dgap| at gap = rupture t^2 (0 where the law has no bridge). */

@@ -33,9 +33,10 @@ typedef struct cb_pair {
 cb_pair cb_pair_make(const cb_law *law, double r1, double r2, double volume);
 
 /* For a pair already made from checked inputs (cb_force, cb_rupture_distance and
- * cb_bridge_step share them, so one call computes the rupture distance once):
- * the rupture distance under the law's rupture and validity rules, and the force at a
- * finite gap under the overlap and rupture rules (as cb_force). */
+ * cb_bridge_step share them, so that one call computes the rupture distance at most once):
+ * the rupture distance under the law's rupture and validity rules; the force at a finite
+ * gap under the validity, overlap and rupture rules (as cb_force), with the pair's rupture
+ * distance if the caller has it, else 0 (computed here if the gap is > 0). */
 cb_status cb_pair_rupture(const cb_law *law, const cb_pair *pair, double *rupture);
 cb_status cb_pair_force(const cb_law *law, const cb_pair *pair, double rupture, double gap,
                         double *force, double *stiffness);
