@@ -10,8 +10,8 @@
 #   willett/reduced rabinovich) and the other four of capbridge (richefeu
 #   rabinovich/uncorrected soulie table), volumes 13.6 and 74.2 nl, -np 2.
 #   The full matrix at default size is 2 engines x 17 runs x ~2 min on 2 idle cores: about 1 h 10 min.
-# Every run holds a lock file ($CAPBRIDGE_HEAVY_LOCK, default /tmp/capbridge-heavy.lock)
-# with flock, so that heavy runs started by several people do not share the cores.
+# With CAPBRIDGE_LOCK=FILE every run holds `flock FILE` (one heavy run at a time on a machine
+# shared by several jobs).
 # Runs go to out/split_bottom/study-SIZE/ENGINE-LAW-VOLUME/ (an existing run with a snapshot
 # and a finished log is kept: delete it to run again); post.py writes out/split_bottom/study-SIZE/post/.
 set -euo pipefail
@@ -30,7 +30,8 @@ while [ $# -gt 0 ]; do
     *) sed -n '6,13p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2 ;;
   esac
 done
-lock=${CAPBRIDGE_HEAVY_LOCK:-/tmp/capbridge-heavy.lock}
+lock=()
+[ -n "${CAPBRIDGE_LOCK:-}" ] && lock=(flock "$CAPBRIDGE_LOCK")
 study=$top/out/split_bottom/study-$size
 mkdir -p "$study"
 runs=()
@@ -45,7 +46,7 @@ one() {  # engine law volume
   fi
   echo "study: $name ($(date -u +%H:%M:%S))"
   local t0=$SECONDS
-  CAPBRIDGE_SKIP_CONFIGURE=${CAPBRIDGE_SKIP_CONFIGURE:-1} flock "$lock" \
+  CAPBRIDGE_SKIP_CONFIGURE=${CAPBRIDGE_SKIP_CONFIGURE:-1} "${lock[@]}" \
     "$top/scripts/scene.sh" "$1" split_bottom -np "$np" -size "$size" -out "$out" \
     -var law "$2" -var volume "$3" > "$study/$name.out" 2>&1
   echo "study: $name took $((SECONDS - t0)) s"

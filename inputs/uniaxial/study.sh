@@ -5,8 +5,8 @@
 # (LAMMPS, w = 2 and 4 %, Protocol 1; LIGGGHTS, fixed volume), and dry; then post.py.
 # Usage: inputs/uniaxial/study.sh [smoke|default|paper] [lammps] [liggghts]
 #   (default: smoke, both engines). Writes out/uniaxial/study-SIZE/ and copies the CSV and PNG
-#   files to docs/results/uniaxial/ (SIZE in their names). Every default or paper run holds
-#   /tmp/eng/heavy.lock when that directory exists (machines shared by several jobs); a run is
+#   files to docs/results/uniaxial/ (SIZE in their names). With CAPBRIDGE_LOCK=FILE every run
+#   holds `flock FILE` (one heavy run at a time on a machine shared by several jobs); a run is
 #   skipped when its end.dump exists already (delete the run directory to redo it).
 set -euo pipefail
 top=$(cd "$(dirname "$0")/../.." && pwd)
@@ -25,7 +25,7 @@ one() {  # one ENGINE NAME -var ... : runs a case unless it finished before
   if [ -f "$dir/end.dump" ]; then return; fi
   echo "study.sh: $engine $name" >&2
   local lock=()
-  [ -d /tmp/eng ] && [ "$size" != smoke ] && lock=(flock /tmp/eng/heavy.lock)
+  [ -n "${CAPBRIDGE_LOCK:-}" ] && lock=(flock "$CAPBRIDGE_LOCK")
   "${lock[@]}" "$top/scripts/scene.sh" "$engine" uniaxial -np 2 -size "$size" -out "$dir" "$@" >"$dir.screen" 2>&1 \
     || { echo "study.sh: $engine $name failed, see $dir.screen" >&2; exit 1; }
 }
