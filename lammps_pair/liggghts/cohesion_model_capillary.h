@@ -57,6 +57,7 @@ COHESION_MODEL(COHESION_CAPILLARY,capillary,9)
 #include "modify.h"
 #include "neighbor.h"
 #include "update.h"
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -297,6 +298,14 @@ namespace ContactModels {
     void surfacesClose(SurfacesCloseData & scdata, ForceData & i_forces, ForceData & j_forces)
     {
       if (wall_) return;
+      // dry and certainly apart (beyond contact by more than the rounding of the gap
+      // computed below): no force, and no bridge can form (only at contact), so no square
+      // root and no call into the core
+      if (scdata.contact_history && scdata.contact_history[history_offset_ + 1] == 0.0 &&
+          scdata.rsq > scdata.radsum * scdata.radsum * (1.0 + 4.0 * DBL_EPSILON)) {
+        if (scdata.contact_flags) *scdata.contact_flags &= ~CONTACT_COHESION_MODEL;
+        return;
+      }
       const double r = std::sqrt(scdata.rsq);
       const double rinv = 1.0 / r;
       const double en[3] = {scdata.delta[0] * rinv, scdata.delta[1] * rinv,
