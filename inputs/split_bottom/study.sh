@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The split-bottom study (Gladkyy 2014 §4.1, Figs. 6-8): dry, then every law at both bridge
 # volumes, in one or both engines; then post.py over all runs, and the CSV + PNG copied to
-# docs/results/split_bottom/ (with -publish).
+# docs/results/split_bottom/ (smoke) or docs/results/split_bottom/SIZE/ (with -publish).
 #
 # Usage: inputs/split_bottom/study.sh [-size smoke|default|paper] [-engines "lammps liggghts"]
 #                                     [-laws "weigert willett ..."] [-volumes "13.6 74.2"]
@@ -61,7 +61,8 @@ for engine in $engines; do
 done
 /usr/bin/python3 "$top/inputs/split_bottom/post.py" "${runs[@]}" --out "$study/post"
 if [ "$publish" = 1 ]; then
-  dest=$top/docs/results/split_bottom
+  dest=$top/docs/results/split_bottom   # the smoke figures; other sizes in a subdirectory
+  [ "$size" = smoke ] || dest=$dest/$size
   mkdir -p "$dest"
   cp "$study/post/summary.csv" "$study/post/"*.png "$dest/"
   cp "$study/post/"*_band.csv "$dest/"
