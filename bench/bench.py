@@ -323,7 +323,7 @@ def main():
     ctx = Context()
     ctx.quick = args.quick
     ctx.repeats = args.repeats or (2 if args.quick else 5)
-    ctx.command = "bench/run.sh " + " ".join(sys.argv[1:])
+    ctx.command = " ".join(["bench/run.sh"] + sys.argv[1:])
     ctx.lammps = (lammps["LAMMPS_MPIRUN"], [lammps["LAMMPS_BINARY"], "-nocite"])
     ctx.liggghts = (liggghts["LIGGGHTS_MPIRUN"], [liggghts["LIGGGHTS_BINARY"]])
     os.makedirs(OUT, exist_ok=True)
