@@ -1045,12 +1045,10 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
     if (mask[i] & freeze_group_bit) meff = mj;
     if (mask[j] & freeze_group_bit) meff = mi;
 
-    // Richefeu 2007 eqs. 2, 3
-    contact = tp.kn * (-gap);
-    if (gap_rate < 0.0) {
-      const double eta = tp.damping_coefficient * sqrt(meff);
-      contact += eta * (-gap_rate);
-    }
+    // Richefeu 2007 eqs. 2, 3: the dashpot acts while the spheres approach; written without a
+    // branch (approach and separation alternate unpredictably from pair to pair)
+    const double closing = MAX(-gap_rate, 0.0);
+    contact = tp.kn * (-gap) + tp.damping_coefficient * sqrt(meff) * closing;
 
     // relative tangential velocity at the contact point
     const double rsqinv = 1.0 / rsq;
