@@ -678,10 +678,9 @@ int PairGranCapillary::wet_pair(int i, int j, const TypePair &tp) const
   return 1;
 }
 
-void PairGranCapillary::check_cb(int status, const char *what, int itype, int jtype, double r1,
-                                 double r2, double vol, double gap)
+void PairGranCapillary::fail_cb(int status, const char *what, int itype, int jtype, double r1,
+                                double r2, double vol, double gap)
 {
-  if (status == CB_OK) return;
   error->one(FLERR, "pair gran/capillary: {} failed for types {} {} (law '{}', r1 = {} m, "
              "r2 = {} m, volume = {} m^3, gap = {} m): {}", what, itype, jtype,
              law_text[law_of[itype][jtype]], r1, r2, vol, gap,

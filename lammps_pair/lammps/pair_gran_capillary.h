@@ -155,8 +155,15 @@ class PairGranCapillary : public Pair {
   const cb_law *law(int itype, int jtype) const { return laws[law_of[itype][jtype]]; }
   int counted(int i, int j) const;
   int wet_pair(int i, int j, const TypePair &tp) const;
+  // a core call's status: nothing on CB_OK (inline: it follows every core call of the pair
+  // loops), else the error naming the pair (fail_cb)
   void check_cb(int status, const char *what, int itype, int jtype, double r1, double r2,
-                double vol, double gap);
+                double vol, double gap)
+  {
+    if (status != CB_OK) fail_cb(status, what, itype, jtype, r1, r2, vol, gap);
+  }
+  [[noreturn]] void fail_cb(int status, const char *what, int itype, int jtype, double r1,
+                            double r2, double vol, double gap);
   void update_bridges();
   void form_bridges_and_forces();
   void pair_force(const AtomArrays &a, const TypePair &tp, int i, int j, double delx,
