@@ -18,6 +18,7 @@
 #ifndef CAPBRIDGE_H
 #define CAPBRIDGE_H
 
+#include <float.h>
 #include <stddef.h>
 
 #ifdef __cplusplus
@@ -180,6 +181,15 @@ cb_status cb_capillary_stiffness_bound(const cb_law *law, double r1, double r2, 
 
 double cb_radius_harmonic(double r1, double r2);  /* 2 r1 r2 / (r1 + r2), Derjaguin */
 double cb_radius_geometric(double r1, double r2); /* sqrt(r1 r2) */
+
+/* For an engine's pair loop: true only where the gap sqrt(rsq) - radsum, as the engine
+ * computes it, is > 0, so that a dry pair can be skipped with no square root (a bridge
+ * forms at gap <= 0, touching included): rsq above radsum^2 by more than the rounding of
+ * the root, the square and the difference (3 ulp; 4 DBL_EPSILON is a safe bound). */
+static inline int cb_certainly_apart(double rsq, double radsum)
+{
+    return rsq > radsum * radsum * (1.0 + 4.0 * DBL_EPSILON);
+}
 
 /* -------------------------------------------------------- bridge state */
 

@@ -53,7 +53,6 @@
 #include "update.h"
 
 #include <algorithm>
-#include <cfloat>
 #include <cmath>
 #include <cstring>
 
@@ -645,18 +644,6 @@ void PairGranCapillary::transfer_history(double *source, double *target, int /*i
 }
 
 /* ----------------------------------------------------------------------
-   the pair loops' test that skips a dry pair without a square root: true only where the
-   gap sqrt(rsq) - radsum, as computed, is > 0 (a bridge forms at gap <= 0, touching
-   included): rsq above radsum^2 by more than the rounding of the root, the square and the
-   difference (3 ulp; 4 DBL_EPSILON is a safe bound)
-------------------------------------------------------------------------- */
-
-static inline bool certainly_apart(double rsq, double radsum)
-{
-  return rsq > radsum * radsum * (1.0 + 4.0 * DBL_EPSILON);
-}
-
-/* ----------------------------------------------------------------------
    each pair counted once over all ranks: with newton on a pair is in one rank's list;
    with newton off a pair with a ghost partner is in both owners' lists and is counted
    where the owned atom has the smaller tag
@@ -777,7 +764,7 @@ void PairGranCapillary::update_bridges()
       const double rsq = delx * delx + dely * dely + delz * delz;
       const double radsum = radius[i] + radius[j];
       // apart and dry: neither a bridge to advance nor a candidate (bridges form at contact)
-      if (bridge->active == 0.0 && certainly_apart(rsq, radsum)) continue;
+      if (bridge->active == 0.0 && cb_certainly_apart(rsq, radsum)) continue;
       const double r = sqrt(rsq);
       const double gap = r - radsum;
 
@@ -928,7 +915,7 @@ void PairGranCapillary::form_bridges_and_forces()
       const double delz = x[i][2] - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
       const double radsum = radius[i] + radius[j];
-      if (bridge->active == 0.0 && certainly_apart(rsq, radsum)) {
+      if (bridge->active == 0.0 && cb_certainly_apart(rsq, radsum)) {
         // apart and dry, the common case: no force, and no bridge can form (only at
         // contact); no square root, no call into the core
         touch[jj] = 0;

@@ -57,7 +57,6 @@ COHESION_MODEL(COHESION_CAPILLARY,capillary,9)
 #include "modify.h"
 #include "neighbor.h"
 #include "update.h"
-#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -298,11 +297,10 @@ namespace ContactModels {
     void surfacesClose(SurfacesCloseData & scdata, ForceData & i_forces, ForceData & j_forces)
     {
       if (wall_) return;
-      // dry and certainly apart (beyond contact by more than the rounding of the gap
-      // computed below): no force, and no bridge can form (only at contact), so no square
-      // root and no call into the core
+      // dry and certainly apart: no force, and no bridge can form (only at contact), so no
+      // square root and no call into the core
       if (scdata.contact_history && scdata.contact_history[history_offset_ + 1] == 0.0 &&
-          scdata.rsq > scdata.radsum * scdata.radsum * (1.0 + 4.0 * DBL_EPSILON)) {
+          cb_certainly_apart(scdata.rsq, scdata.radsum)) {
         if (scdata.contact_flags) *scdata.contact_flags &= ~CONTACT_COHESION_MODEL;
         return;
       }
