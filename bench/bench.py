@@ -185,8 +185,7 @@ def part3(ctx):
 
     times = alternate({"1": 1, "2": 2}, ctx.repeats, run_ranks)
     t1, t2 = median_us(times["1"]), median_us(times["2"])
-    speedups = [a.seconds / b.seconds for a, b in zip(times["1"], times["2"])]
-    speedup = statistics.median(speedups)
+    speedup, slowest, fastest = ratio_stats(times, "1", "2")  # time on 1 rank / on 2
     n = times["1"][0].atoms
     steps = times["1"][0].steps
     text = header(3, "MPI: parallel efficiency and growth with N", ctx.command)
@@ -195,8 +194,8 @@ def part3(ctx):
              f"({steps} steps) timed after the settling; {ctx.repeats} repeats, 1 and 2 ranks "
              "alternating.\n\n| ranks | us per particle-step (wall, median) |\n|---:|---:|\n"
              f"| 1 | {t1:.3f} |\n| 2 | {t2:.3f} |\n\n"
-             f"Speed-up 2 ranks / 1 rank: **{speedup:.2f}** (min {min(speedups):.2f}, max "
-             f"{max(speedups):.2f}): parallel efficiency **{100 * speedup / 2:.0f} %**.\n\n")
+             f"Speed-up 2 ranks / 1 rank: **{speedup:.2f}** (min {slowest:.2f}, max "
+             f"{fastest:.2f}): parallel efficiency **{100 * speedup / 2:.0f} %**.\n\n")
 
     data = base_packing(ctx)
     grids = [(1, 1, 1), (2, 1, 1), (2, 2, 1), (2, 2, 2)]
