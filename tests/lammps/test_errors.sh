@@ -65,4 +65,16 @@ close_rel "time step: 0.1 pi sqrt(m/k) in the warning" "$limit" \
     "$(awk 'BEGIN { pi = atan2(0, -1); m = 4 / 3 * pi * 1e-9 * 2500; printf "%.17g", 0.1 * pi * sqrt(m / 100) }')" 1e-5
 echo "time step: $(grep -m1 'WARNING: pair gran/capillary' "$TMP/dt.log")"
 
+# k_n = 1 N/m: the capillary stiffness bound decides.  Richefeu's law is steepest at contact,
+# so the bound is |dF/dgap| at gap 0, which the CLI's force curve gives independently
+checks=$((checks + 1))
+lmp 1 "$TMP/dt_capillary.log" -in "$DECKS/in.errors" -var pstyle gran/capillary \
+    -var pcoeff "1 0.4 0.3 0.4 law richefeu gamma 0.0728 volume 1e-12" -var dt 1e-3 \
+    >/dev/null 2>&1 || fail "capillary time step: LAMMPS failed: $(grep -m1 ERROR "$TMP/dt_capillary.log")"
+bound=$(sed -n 's/.*the capillary stiffness bound \([^ ]*\) N\/m.*/\1/p' "$TMP/dt_capillary.log" | head -1)
+at_contact=$("$CB" curve richefeu --r1 1e-3 --r2 1e-3 --volume 1e-12 --points 2 --to 1e-6 |
+    awk -F, 'NR == 2 { printf "%.17g", $3 < 0 ? -$3 : $3 }')
+close_rel "capillary time step: the stiffness bound in the warning" "$bound" "$at_contact" 1e-5
+echo "capillary time step: $(grep -m1 'WARNING: pair gran/capillary' "$TMP/dt_capillary.log")"
+
 finish
