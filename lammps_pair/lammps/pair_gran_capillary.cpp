@@ -1104,7 +1104,10 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
 /* ----------------------------------------------------------------------
    time-step check, at setup and after every re-neighboring, warns once:
    dt > 0.1 pi sqrt(m_min / k), k the larger of k_n and the capillary stiffness bound
-   (cb_capillary_stiffness_bound over the radius ranges and the bridge volumes in use)
+   (cb_capillary_stiffness_bound over the radius ranges and the bridge volumes in use).
+   One reduction per call (the smallest mass per type and the volume range per type pair,
+   packed into one MIN); the stiffness bound, ~10^3 force calls per type pair, is evaluated
+   again only when a type pair's volume range has changed (in fixed mode: once per run).
 ------------------------------------------------------------------------- */
 
 void PairGranCapillary::check_timestep()
@@ -1112,13 +1115,13 @@ void PairGranCapillary::check_timestep()
   if (dt_warned) return;
   const int n = atom->ntypes;
   const int np = (n + 1) * (n + 1);
-  std::vector<double> mass_lo(n + 1, HUGE_VAL), mass(n + 1);
+  // [mass per type | smallest volume per type pair | minus the largest], all reduced by MIN
+  timestep_local.assign(n + 1 + 2 * np, HUGE_VAL);
+  timestep_global.resize(timestep_local.size());
+  double *mass_lo = timestep_local.data();
+  double *vlo = mass_lo + n + 1, *minus_vhi = vlo + np;
   for (int i = 0; i < atom->nlocal; i++)
     mass_lo[atom->type[i]] = MIN(mass_lo[atom->type[i]], atom->rmass[i]);
-  MPI_Allreduce(&mass_lo[1], &mass[1], n, MPI_DOUBLE, MPI_MIN, world);
-
-  // bridge volumes in use per type pair: fixed, or the range of the active bridges
-  std::vector<double> vlo(np, HUGE_VAL), vhi(np, 0.0), vlo_all(np), vhi_all(np);
   if (liquid_mode != LIQUID_FIXED && fix_history && list) {
     int *type = atom->type;
     for (int ii = 0; ii < list->inum; ii++) {
@@ -1130,36 +1133,50 @@ void PairGranCapillary::check_timestep()
         if (bridge->active == 0.0) continue;
         const int a = MIN(type[i], type[j]), b = MAX(type[i], type[j]);
         vlo[a * (n + 1) + b] = MIN(vlo[a * (n + 1) + b], bridge->volume);
-        vhi[a * (n + 1) + b] = MAX(vhi[a * (n + 1) + b], bridge->volume);
+        minus_vhi[a * (n + 1) + b] = MIN(minus_vhi[a * (n + 1) + b], -bridge->volume);
       }
     }
   }
-  MPI_Allreduce(vlo.data(), vlo_all.data(), np, MPI_DOUBLE, MPI_MIN, world);
-  MPI_Allreduce(vhi.data(), vhi_all.data(), np, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(timestep_local.data(), timestep_global.data(), (int) timestep_local.size(),
+                MPI_DOUBLE, MPI_MIN, world);
+  const double *mass = timestep_global.data();
+  const double *vlo_all = mass + n + 1, *minus_vhi_all = vlo_all + np;
 
+  // the bound per type pair, for the volumes it was last evaluated at
+  if (update->setupflag || bound_volumes.size() != (size_t) (2 * np)) {
+    bound_volumes.assign(2 * np, -1.0);
+    capillary_bound.assign(np, 0.0);
+  }
   for (int i = 1; i <= n; i++)
     for (int j = i; j <= n; j++) {
       if (!setflag[i][j] || mass[i] == HUGE_VAL || mass[j] == HUGE_VAL) continue;
-      const double m = MIN(mass[i], mass[j]);
+      const int ij = i * (n + 1) + j;
       double volumes[2] = {0.0, 0.0};
       if (liquid_mode == LIQUID_FIXED)
         volumes[0] = design_volume(i, j);
-      else if (vhi_all[i * (n + 1) + j] > 0.0) {
-        volumes[0] = vlo_all[i * (n + 1) + j];
-        volumes[1] = vhi_all[i * (n + 1) + j];
+      else if (-minus_vhi_all[ij] > 0.0) {
+        volumes[0] = vlo_all[ij];
+        volumes[1] = -minus_vhi_all[ij];
       }
-      double capillary = 0.0;
-      const double ri[2] = {rad_min[i], rad_max[i]}, rj[2] = {rad_min[j], rad_max[j]};
-      for (double vol : volumes) {
-        if (!(vol > 0.0)) continue;
-        for (double r1 : ri)
-          for (double r2 : rj) {
-            double k = 0.0;
-            if (r1 > 0.0 && r2 > 0.0 &&
-                cb_capillary_stiffness_bound(law(i, j), r1, r2, vol, &k) == CB_OK)
-              capillary = MAX(capillary, k);
-          }
+      if (volumes[0] != bound_volumes[2 * ij] || volumes[1] != bound_volumes[2 * ij + 1]) {
+        double capillary = 0.0;
+        const double ri[2] = {rad_min[i], rad_max[i]}, rj[2] = {rad_min[j], rad_max[j]};
+        for (double vol : volumes) {
+          if (!(vol > 0.0)) continue;
+          for (double r1 : ri)
+            for (double r2 : rj) {
+              double k = 0.0;
+              if (r1 > 0.0 && r2 > 0.0 &&
+                  cb_capillary_stiffness_bound(law(i, j), r1, r2, vol, &k) == CB_OK)
+                capillary = MAX(capillary, k);
+            }
+        }
+        capillary_bound[ij] = capillary;
+        bound_volumes[2 * ij] = volumes[0];
+        bound_volumes[2 * ij + 1] = volumes[1];
       }
+      const double m = MIN(mass[i], mass[j]);
+      const double capillary = capillary_bound[ij];
       const double contact = contact_on[i][j] ? kn[i][j] : 0.0;
       const double k = MAX(contact, capillary);
       if (!(k > 0.0)) continue;

@@ -148,6 +148,9 @@ class PairGranCapillary : public Pair {
   double n_formed, n_ruptured, n_reach, pool_released;
 
   int dt_warned, reach_warned;
+  // check_timestep(): its reduction buffers, and the capillary stiffness bound per type pair
+  // with the two volumes it was evaluated at
+  std::vector<double> timestep_local, timestep_global, bound_volumes, capillary_bound;
   int neighprev;
 
   void allocate();
