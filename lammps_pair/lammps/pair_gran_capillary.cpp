@@ -743,6 +743,7 @@ void PairGranCapillary::update_bridges()
   int *ilist = list->ilist;
   int *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
+  int **firsttouch = fix_history->firstflag;
   double **firstvalue = fix_history->firstvalue;
   double *special = force->special_lj;
 
@@ -750,21 +751,23 @@ void PairGranCapillary::update_bridges()
     const int i = ilist[ii];
     const int itype = type[i];
     int *jlist = firstneigh[i];
+    int *touch = firsttouch[i];
     double *allhistory = firstvalue[i];
     for (int jj = 0; jj < numneigh[i]; jj++) {
       int j = jlist[jj];
       if (special[sbmask(j)] == 0.0) continue;
       j &= NEIGHMASK;
-      const int jtype = type[j];
-      double *history = &allhistory[SIZE_HISTORY * jj];
-      cb_bridge *bridge = bridge_of(history);
       const double delx = x[i][0] - x[j][0];
       const double dely = x[i][1] - x[j][1];
       const double delz = x[i][2] - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
       const double radsum = radius[i] + radius[j];
-      // apart and dry: neither a bridge to advance nor a candidate (bridges form at contact)
-      if (bridge->active == 0.0 && cb_certainly_apart(rsq, radsum)) continue;
+      // apart and flagged 0 (no bridge: see pair_force): neither a bridge to advance nor a
+      // candidate (bridges form at contact)
+      if (touch[jj] == 0 && cb_certainly_apart(rsq, radsum)) continue;
+      const int jtype = type[j];
+      double *history = &allhistory[SIZE_HISTORY * jj];
+      cb_bridge *bridge = bridge_of(history);
       const double r = sqrt(rsq);
       const double gap = r - radsum;
 
@@ -907,21 +910,18 @@ void PairGranCapillary::form_bridges_and_forces()
       const double factor_lj = special[sbmask(j)];
       j &= NEIGHMASK;
       if (factor_lj == 0.0) continue;
-      const int jtype = type[j];
-      double *history = &allhistory[SIZE_HISTORY * jj];
-      cb_bridge *bridge = bridge_of(history);
       const double delx = x[i][0] - x[j][0];
       const double dely = x[i][1] - x[j][1];
       const double delz = x[i][2] - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
       const double radsum = radius[i] + radius[j];
-      if (bridge->active == 0.0 && cb_certainly_apart(rsq, radsum)) {
-        // apart and dry, the common case: no force, and no bridge can form (only at
-        // contact); no square root, no call into the core
-        touch[jj] = 0;
-        history[HIST_SHEAR] = history[HIST_SHEAR + 1] = history[HIST_SHEAR + 2] = 0.0;
-        continue;
-      }
+      // apart, neither touching nor bridged at the last step: the common case.  No force,
+      // and no bridge can form (only at contact).  Its history is all zero (see
+      // pair_force), so it is neither read nor written: no square root, no core call.
+      if (touch[jj] == 0 && cb_certainly_apart(rsq, radsum)) continue;
+      double *history = &allhistory[SIZE_HISTORY * jj];
+      cb_bridge *bridge = bridge_of(history);
+      const int jtype = type[j];
       const double r = sqrt(rsq);
       const double gap = r - radsum;
       const TypePair &tp = type_pair(itype, jtype);
@@ -1009,6 +1009,10 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
   cb_bridge *bridge = bridge_of(history);
   double *shear = &history[HIST_SHEAR];
 
+  // The flag (LAMMPS's neighbor-history "touch") is 1 while the pair touches or holds a
+  // bridge, and a pair flagged 0 has an all-zero history: cleared here with the flag, by
+  // Protocol 1 the same way, and by FixNeighHistory for every pair it does not carry over
+  // at re-neighboring.  The pair loops rely on it to skip flagged-0 pairs that are apart.
   const int in_contact = tp.contact_on && gap < 0.0;
   touch = (in_contact || bridge->active != 0.0) ? 1 : 0;
   if (!in_contact) {
