@@ -196,8 +196,11 @@ static double scaled_rupture(const struct cb_table *t, const cb_table_position *
 void cb_table_locate(const cb_law *law, cb_pair *pair)
 {
     cb_table_position *p = &pair->table;
-    double rh = pair->r_harmonic;
-    double v = pair->volume / (rh * rh * rh);
+    /* V / R_h^3 with 1/R_h = (R1 + R2) / (2 R1 R2) from the radii: a division that runs
+     * alongside R_h's own instead of after it (this law's cost is its chain of dependent
+     * divisions, square roots and the logarithm) */
+    double inverse_rh = (pair->r1 + pair->r2) / (2.0 * pair->r1 * pair->r2);
+    double v = pair->volume * (inverse_rh * inverse_rh * inverse_rh);
     double clamped = v < table_volume_min ? table_volume_min
                      : v > table_volume_max ? table_volume_max
                                             : v;
