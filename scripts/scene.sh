@@ -6,7 +6,7 @@
 #   ENGINE  lammps or liggghts
 #   SCENE   a directory of inputs/ (direct_shear, uniaxial, split_bottom)
 #   -np     MPI ranks (default 2)
-#   -size   the deck's size (default: default)
+#   -size   the deck's size (default: default); split_bottom also has large
 #   -out    output directory, created if needed (default out/SCENE/ENGINE-SIZE)
 #   -var    passed on to the deck (any number)
 # The deck is inputs/SCENE/in.ENGINE. It runs in the output directory and gets the variables
@@ -25,13 +25,23 @@ np=2 size=default out="" vars=()
 while [ $# -gt 0 ]; do
   case $1 in
     -np) np=${2:?-np needs a number}; shift 2 ;;
-    -size) size=${2:?-size needs smoke, default or paper}; shift 2 ;;
+    -size) size=${2:?-size needs a size: smoke, default, paper}; shift 2 ;;
     -out) out=${2:?-out needs a directory}; shift 2 ;;
     -var) vars+=(-var "${2:?-var needs NAME VALUE}" "${3:?-var $2 needs a value}"); shift 3 ;;
     *) echo "scene.sh: unknown option '$1'" >&2; usage ;;
   esac
 done
-case $size in smoke|default|paper) ;; *) echo "scene.sh: unknown size '$size' (allowed: smoke, default, paper)" >&2; exit 2 ;; esac
+# every scene has smoke, default and paper; a scene may add sizes of its own (size_NAME.in)
+extra=""
+for f in "$top/inputs/$scene"/size_*.in; do
+  name=${f##*/size_}; name=${name%.in}
+  case $name in smoke|default|paper|'*') ;; *) extra="$extra, $name" ;; esac
+done
+case $size in
+  smoke|default|paper) ;;
+  *) [ -f "$top/inputs/$scene/size_$size.in" ] ||
+       { echo "scene.sh: unknown size '$size' (allowed: smoke, default, paper$extra)" >&2; exit 2; } ;;
+esac
 case $np in ''|*[!0-9]*|0) echo "scene.sh: -np must be a positive integer, not '$np'" >&2; exit 2 ;; esac
 [ -n "$out" ] || out="$top/out/$scene/$engine-$size"
 [ "${CAPBRIDGE_SKIP_CONFIGURE:-0}" = 1 ] || "$top/scripts/configure.sh"

@@ -3,7 +3,7 @@
 # volumes, in one or both engines; then post.py over all runs, and the CSV + PNG copied to
 # docs/results/split_bottom/ (smoke) or docs/results/split_bottom/SIZE/ (with -publish).
 #
-# Usage: inputs/split_bottom/study.sh [-size smoke|default|paper] [-engines "lammps liggghts"]
+# Usage: inputs/split_bottom/study.sh [-size smoke|default|large|paper] [-engines "lammps liggghts"]
 #                                     [-laws "weigert willett ..."] [-volumes "13.6 74.2"]
 #                                     [-np N] [-publish]
 #   defaults: -size default, both engines, Gladkyy's four laws (weigert willett
