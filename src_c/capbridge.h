@@ -107,7 +107,9 @@ typedef struct cb_law {
     int prepared;
 } cb_law;
 
-/* Which radius a law scales lengths and volumes by (MODELS.md, "Radius conventions"). */
+/* Which radius a law scales lengths and volumes by. The sources differ and each law keeps its
+ * own: R_h in Gladkyy & Schwarze 2014 eq. 1, R_g in Richefeu 2007 eqs. 4 and 14, the larger
+ * radius in Soulie 2006. */
 typedef enum cb_radius_reference {
     CB_RADIUS_HARMONIC = 0, /* R_h = 2 r1 r2 / (r1 + r2) (Derjaguin) */
     CB_RADIUS_GEOMETRIC,    /* R_g = sqrt(r1 r2) */

@@ -7,8 +7,8 @@
  *   as published (eq. 11):        F = the above + 2 pi gamma R sin(alpha) sin(theta + alpha)
  * Eq. 11 writes attraction as negative; here both terms are attractive magnitudes.
  *
- * Radius: R = R_h = 2 R1 R2 / (R1 + R2) (Gladkyy eq. 1). MODELS.md notes one code using
- * R_r = R_h / 2. At contact eq. 12 gives F(0) = 2 pi R gamma cos(theta) for every volume,
+ * Radius: R = R_h = 2 R1 R2 / (R1 + R2) (Gladkyy eq. 1). One public DEM code uses
+ * R_r = R_h / 2 instead. At contact eq. 12 gives F(0) = 2 pi R gamma cos(theta) for every volume,
  * and the exact V -> 0 limit at contact is the Derjaguin value 2 pi gamma R_h cos(theta)
  * (Willett 2000; the exact solver gives F(0) / (2 pi gamma R_h cos theta) = 0.960, 0.988,
  * 0.996 at V/R_h^3 = 1e-4, 1e-6, 1e-8 for r2 = 3 r1, theta = 20 deg, where R_g would be

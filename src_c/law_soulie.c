@@ -1,4 +1,4 @@
-/* law_soulie.c — Soulie, Cherblanc, El Youssoufi & Saix 2006 (MODELS.md item 6).
+/* law_soulie.c — Soulie, Cherblanc, El Youssoufi & Saix 2006, as public DEM codes implement it.
  *
  *   F = pi gamma sqrt(R1 R2) [C + exp(A gap / R2 + B)]
  *   A = -1.1 V*^(-0.53)
@@ -47,11 +47,11 @@ cb_status cb_soulie_force(const cb_law *law, const cb_pair *pair, double gap, do
     return CB_OK;
 }
 
-/* No range is stated for the fit in the sources available here (MODELS.md item 6 gives
- * the formula as other public codes implement it; Gladkyy 2014 does not evaluate it). */
+/* No range is stated for the fit in the sources available here (the formula above is
+ * the one other public DEM codes implement; Gladkyy 2014 does not evaluate it). */
 cb_validity cb_soulie_validity(void)
 {
     cb_validity v = {0.0, HUGE_VAL, HUGE_VAL, HUGE_VAL, CB_RADIUS_LARGE,
-                     "Soulie et al. 2006 (MODELS.md item 6): no range stated"};
+                     "Soulie et al. 2006 (as in public DEM codes): no range stated"};
     return v;
 }

@@ -1,7 +1,8 @@
-/* ly_branch.c — the fixed-volume branch connected to gap 0 (MODELS.md, "The exact
- * reference: Laplace-Young"): the bridge at contact by continuation in delta1 from a small
- * toroidal bridge, then pseudo-arclength continuation in (delta1, delta2, P, S, gap) up to
- * the fold (the rupture distance), since neither the gap nor delta1 is monotone along it.
+/* ly_branch.c — the fixed-volume branch connected to gap 0 (of the two branches at fixed
+ * volume, the physical one; equations in laplace_young_internal.h): the bridge at contact
+ * by continuation in delta1 from a small toroidal bridge, then pseudo-arclength continuation
+ * in (delta1, delta2, P, S, gap) up to the fold (the rupture distance), since neither the
+ * gap nor delta1 is monotone along it.
  *
  * Branch points. For equal spheres at larger contact angles (theta above about 30 deg:
  * 29 to 31 deg for V / R^3 from 0.1 to 1e-5) the symmetric bridge loses stability to an

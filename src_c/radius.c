@@ -1,4 +1,5 @@
-/* radius.c — the radius conventions the laws use (MODELS.md). */
+/* radius.c — the radius conventions the laws use; each law keeps its source's radius
+ * (cb_radius_reference in capbridge.h). */
 #include "capbridge.h"
 
 #include <math.h>

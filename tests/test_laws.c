@@ -118,7 +118,7 @@ static void test_contact_limits(void)
      *        = 5.383480881674357e-4 N
      *   A = -1.1 0.0125^-0.53 = -11.220969405971216;
      *   F(2e-5 m) = pi 0.072 sqrt(2e-6) (C + exp(A 2e-5 / 2e-3 + B)) = 4.8358668721354626e-4 N
-     * (computed independently with python3 -c, from the formula in MODELS.md item 6). */
+     * (computed independently with python3 -c, from the formula atop src_c/law_soulie.c). */
     {
         cb_law soulie = make_law(CB_MODEL_SOULIE, 20.0 * DEG, CB_VALIDITY_EXTEND);
         CHECK_REL(force_of(&soulie, 1e-3, 2e-3, 1e-10, 0.0), 5.383480881674357e-4, 1e-12);

@@ -1,4 +1,4 @@
-/* cmd_pulloff.c — `capbridge pulloff`: two spheres pulled apart (SCENES.md, scene 0).
+/* cmd_pulloff.c — `capbridge pulloff`: two spheres pulled apart (Gladkyy & Schwarze 2014, §3).
  *
  * Sphere 1 (free) starts at x = 0, sphere 2 at x = r1 + r2 (gap 0), both at rest; sphere
  * 2 is then driven at the constant velocity +v along x. A bridge of the given volume forms
