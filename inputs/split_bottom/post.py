@@ -7,8 +7,9 @@ Usage: /usr/bin/python3 inputs/split_bottom/post.py RUN_DIR [RUN_DIR ...] --out 
 Each RUN_DIR is the output directory of one run of in.lammps or in.liggghts (scripts/scene.sh
 -out).  It must hold the log (log.lammps or log.liggghts, with its SPLIT_BOTTOM_PARAMS line),
 torque.txt and the snap.*.txt snapshots.  Writes into OUT_DIR:
-  summary.csv             one line per run: law, volume, band centre and width at mid height,
-                          mu and c of tau = mu p + c, torque, bridges, inertial number
+  summary.csv             one line per run: law, volume, band centre (with its standard
+                          error) and width at mid height, mu and c of tau = mu p + c (c with
+                          its standard error from the fit), torque, bridges, inertial number
   <run>_omega.csv         omega(r, z)/Omega on the (r, z) grid, with the grain counts
   <run>_band.csv          R_C and W of the fit omega/Omega = 0.5 + 0.5 erf((r - R_C)/W)
                           (Gladkyy eq. 13) for every height
@@ -28,6 +29,8 @@ Definitions (kept simple; see docs/results/split_bottom.md):
     Gladkyy's 0.12 /s times Omega/Omega_paper (Omega_paper = 2 pi/100 s), since the rates
     scale with the rotation rate.
   * inertial number I = shear rate * d / sqrt(p/rho), median over the band cells.
+  * standard error of R_C at mid height: block jackknife, the snapshots in 5 consecutive
+    blocks, each left out once and the erf refitted (neighbouring snapshots are correlated).
 """
 import argparse
 import csv
@@ -165,6 +168,7 @@ def analyse(run, rate_min=None):
     count = np.zeros((nr, nz))
     wsum = np.zeros((nr, nz))
     S = {k: np.zeros((nr, nz)) for k in ("rphi", "zphi", "tr")}
+    count_of, wsum_of = [], []  # per snapshot, for the standard error of R_C
     for s in snaps:
         x, y, z = s["x"], s["y"], s["z"]
         r = np.hypot(x, y)
@@ -179,8 +183,12 @@ def analyse(run, rate_min=None):
         # e_r = (c, s, 0), e_phi = (-s, c, 0): S_rphi = e_r.S.e_phi, S_zphi = e_z.S.e_phi
         s_rphi = -c * sn * sxx + c * sn * syy + (c * c - sn * sn) * sxy
         s_zphi = -sn * sxz + c * syz
-        np.add.at(count, (ir, iz), 1)
-        np.add.at(wsum, (ir, iz), omega)
+        count_of.append(np.zeros((nr, nz)))
+        wsum_of.append(np.zeros((nr, nz)))
+        np.add.at(count_of[-1], (ir, iz), 1)
+        np.add.at(wsum_of[-1], (ir, iz), omega)
+        count += count_of[-1]
+        wsum += wsum_of[-1]
         np.add.at(S["rphi"], (ir, iz), s_rphi)
         np.add.at(S["zphi"], (ir, iz), s_zphi)
         np.add.at(S["tr"], (ir, iz), sxx + syy + szz)
@@ -213,9 +221,14 @@ def analyse(run, rate_min=None):
         fits.append((zc_[j], rcen, W))
     if not fits:
         raise PostError(f"{run}: no height with enough grains for the erf fit")
-    # tau = mu p + c over the band cells
+    mid = min(fits, key=lambda f: abs(f[0] - 0.5 * H))
+    rc_mid_se = block_jackknife_rc(count_of, wsum_of, mid, zc_, rc_, dense, Omega)
+    # tau = mu p + c over the band cells; the intercept's standard error from the fit
+    c_se = float("nan")
     if band.sum() >= 3:
         mu, c0 = np.polyfit(p[band], tau[band], 1)
+        if band.sum() >= 4:  # numpy's covariance needs more points than parameters + 2
+            c_se = float(math.sqrt(np.polyfit(p[band], tau[band], 1, cov=True)[1][1, 1]))
         inertial = float(np.median(gdot[band] * d / np.sqrt(np.maximum(p[band], 1e-30) / P["rho"])))
     else:
         mu = c0 = inertial = float("nan")
@@ -239,7 +252,6 @@ def analyse(run, rate_min=None):
     bridges = th_shear[in_win, 4]
     liquid = th_shear[in_win, 5]
     grains = int(np.median([len(s["id"]) for s in snaps]))
-    mid = min(fits, key=lambda f: abs(f[0] - 0.5 * H))
     return {
         "run": os.path.basename(os.path.normpath(run)), "params": P, "fits": fits,
         "omega": omega / Omega, "count": count / nsnap, "rc": rc_, "zc": zc_,
@@ -247,8 +259,35 @@ def analyse(run, rate_min=None):
         "mu": mu, "c": c0, "inertial": inertial, "torque_mean": float(M.mean()),
         "torque_sem": float(M.std(ddof=1) / math.sqrt(len(M))) if len(M) > 1 else float("nan"),
         "bridges": bridges, "liquid": liquid, "grains": grains, "snapshots": nsnap,
-        "z_mid": mid[0], "Rc_mid": mid[1], "W_mid": mid[2],
+        "z_mid": mid[0], "Rc_mid": mid[1], "W_mid": mid[2], "Rc_mid_se": rc_mid_se,
+        "c_se": c_se,
     }
+
+
+def block_jackknife_rc(count_of, wsum_of, mid, zc_, rc_, dense, Omega, blocks=5):
+    """Standard error of R_C at mid height: the snapshots in `blocks` consecutive blocks
+    (neighbouring snapshots are correlated), R_C fitted again with each block left out,
+    SE = sqrt((n - 1)/n sum (R_C,i - mean)^2).  nan with fewer snapshots than blocks."""
+    n = len(count_of)
+    if n < blocks:
+        return float("nan")
+    j = int(np.argmin(abs(zc_ - mid[0])))
+    edges = np.linspace(0, n, blocks + 1).round().astype(int)
+    count_all = sum(c[:, j] for c in count_of)
+    wsum_all = sum(w[:, j] for w in wsum_of)
+    estimates = []
+    for b in range(blocks):
+        left = range(edges[b], edges[b + 1])
+        count = count_all - sum(count_of[k][:, j] for k in left)
+        wsum = wsum_all - sum(wsum_of[k][:, j] for k in left)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            omega = wsum / count
+        m = dense[:, j] & np.isfinite(omega) & (count > 0)
+        if m.sum() < 6:
+            return float("nan")
+        estimates.append(erf_fit(rc_[m], omega[m] / Omega, count[m])[0])
+    estimates = np.array(estimates)
+    return float(math.sqrt((blocks - 1) / blocks * np.sum((estimates - estimates.mean()) ** 2)))
 
 
 def write_csv(path, header, rows):
@@ -272,8 +311,10 @@ def write_outputs(results, out):
         nb = float(np.mean(a["bridges"])) if len(a["bridges"]) else float("nan")
         rows.append([a["run"], P["engine"], P["size"], P["law"] if P["volume_nl"] else "dry",
                      P["volume_nl"], a["grains"], a["snapshots"], f"{a['z_mid'] / P['H']:.3f}",
-                     f"{a['Rc_mid'] / P['Rs']:.4f}", f"{a['W_mid'] / (2 * P['R']):.3f}",
-                     f"{a['mu']:.4f}", f"{a['c']:.4f}", f"{a['torque_mean']:.6e}",
+                     f"{a['Rc_mid'] / P['Rs']:.4f}", f"{a['Rc_mid_se'] / P['Rs']:.4f}",
+                     f"{a['W_mid'] / (2 * P['R']):.3f}",
+                     f"{a['mu']:.4f}", f"{a['c']:.4f}", f"{a['c_se']:.4f}",
+                     f"{a['torque_mean']:.6e}",
                      f"{a['torque_sem']:.2e}", f"{nb:.1f}", f"{2 * nb / a['grains']:.3f}",
                      f"{a['inertial']:.4f}", f"{a['rate_min']:.4f}"])
         nr, nz = a["omega"].shape
@@ -290,7 +331,8 @@ def write_outputs(results, out):
                    for i in range(nr) for j in range(nz)])
     write_csv(os.path.join(out, "summary.csv"),
               ["run", "engine", "size", "law", "volume_nl", "grains", "snapshots", "z_mid_over_H",
-               "Rc_mid_over_Rs", "W_mid_over_d", "mu", "c_Pa", "torque_Nm", "torque_sem_Nm",
+               "Rc_mid_over_Rs", "Rc_mid_se_over_Rs", "W_mid_over_d", "mu", "c_Pa", "c_se_Pa",
+               "torque_Nm", "torque_sem_Nm",
                "bridges", "bridges_per_grain_z", "inertial_number", "band_rate_min_per_s"], rows)
 
 
