@@ -9,7 +9,8 @@ Each RUN_DIR is the output directory of one run of in.lammps or in.liggghts (scr
 torque.txt and the snap.*.txt snapshots.  Writes into OUT_DIR:
   summary.csv             one line per run: law, volume, band centre (with its standard
                           error) and width at mid height, mu and c of tau = mu p + c (c with
-                          its standard error from the fit), torque, bridges, inertial number
+                          its standard error from the fit), torque, bridges, inertial number,
+                          the seed of the realisation (params.in)
   <run>_omega.csv         omega(r, z)/Omega on the (r, z) grid, with the grain counts
   <run>_band.csv          R_C and W of the fit omega/Omega = 0.5 + 0.5 erf((r - R_C)/W)
                           (Gladkyy eq. 13) for every height
@@ -218,6 +219,11 @@ def analyse(run, rate_min=None):
         if m.sum() < 6:
             continue
         rcen, W = erf_fit(rc_[m], omega[m, j] / Omega, count[m, j])
+        # a profile that is not a step (e.g. at the free surface of a large cell) sends the
+        # fit away: a centre outside the cells fitted or a width beyond their span is no band
+        span = rc_[m].max() - rc_[m].min()
+        if not (rc_[m].min() <= rcen <= rc_[m].max() and 0.0 < W <= span):
+            continue
         fits.append((zc_[j], rcen, W))
     if not fits:
         raise PostError(f"{run}: no height with enough grains for the erf fit")
@@ -316,7 +322,7 @@ def write_outputs(results, out):
                      f"{a['mu']:.4f}", f"{a['c']:.4f}", f"{a['c_se']:.4f}",
                      f"{a['torque_mean']:.6e}",
                      f"{a['torque_sem']:.2e}", f"{nb:.1f}", f"{2 * nb / a['grains']:.3f}",
-                     f"{a['inertial']:.4f}", f"{a['rate_min']:.4f}"])
+                     f"{a['inertial']:.4f}", f"{a['rate_min']:.4f}", int(P.get("seed", 0))])
         nr, nz = a["omega"].shape
         write_csv(os.path.join(out, f"{a['run']}_omega.csv"),
                   ["r_m", "z_m", "omega_over_Omega", "grains_per_snapshot"],
@@ -333,7 +339,8 @@ def write_outputs(results, out):
               ["run", "engine", "size", "law", "volume_nl", "grains", "snapshots", "z_mid_over_H",
                "Rc_mid_over_Rs", "Rc_mid_se_over_Rs", "W_mid_over_d", "mu", "c_Pa", "c_se_Pa",
                "torque_Nm", "torque_sem_Nm",
-               "bridges", "bridges_per_grain_z", "inertial_number", "band_rate_min_per_s"], rows)
+               "bridges", "bridges_per_grain_z", "inertial_number", "band_rate_min_per_s",
+               "seed"], rows)
 
 
 def plot(results, out):
