@@ -15,6 +15,9 @@ torque.txt and the snap.*.txt snapshots.  Writes into OUT_DIR:
   <run>_band.csv          R_C and W of the fit omega/Omega = 0.5 + 0.5 erf((r - R_C)/W)
                           (Gladkyy eq. 13) for every height
   <run>_stress.csv        p, tau, shear rate per (r, z) cell and whether it is in the band
+  band_shift.csv          per engine and volume over its runs (seeds, laws): R_C at mid
+                          height, R_C and R_C + W over the upper half, over Rs, with standard
+                          errors, and each wet group's shift from the dry group
   omega_profiles.png      omega(r)/Omega at a few heights with the erf fits, every run
   shear_bands.png         R_C(z) and R_C + W(z), every run (Gladkyy Fig. 6)
   tau_p.png               tau against p in the band with the fits (Gladkyy Fig. 7)
@@ -309,6 +312,51 @@ def label(a):
     return "dry" if v == 0 else f"{P['law']} {v:g} nl"
 
 
+def mean_se(values):
+    """Mean and its standard error (nan for fewer than two values)."""
+    v = np.array(values, dtype=float)
+    se = float(v.std(ddof=1) / math.sqrt(len(v))) if len(v) > 1 else float("nan")
+    return float(v.mean()), se
+
+
+def band_shift_rows(results):
+    """The band per engine and volume over its runs (dry: every seed; wet: every law and seed,
+    taken as realisations of one wet material, since the laws give nearly the same flow), and
+    each wet group's shift from the same engine's dry group: R_C at mid height, and R_C and
+    R_C + W averaged over the fitted heights in the upper half (z >= H/2), where Gladkyy's
+    Fig. 6 shows the shift.  Lengths over Rs; standard errors from the run-to-run scatter."""
+    groups = {}
+    for a in results:
+        P = a["params"]
+        f = np.array(a["fits"])
+        upper = f[f[:, 0] >= 0.5 * P["H"]]
+        if not len(upper):
+            continue
+        groups.setdefault((P["engine"], P["volume_nl"]), []).append(
+            (a["Rc_mid"] / P["Rs"], upper[:, 1].mean() / P["Rs"],
+             (upper[:, 1] + upper[:, 2]).mean() / P["Rs"]))
+    stats = {key: [mean_se([r[k] for r in runs]) for k in range(3)] + [len(runs)]
+             for key, runs in groups.items()}
+    rows = []
+    for (engine, volume), st in sorted(stats.items()):
+        dry = stats.get((engine, 0.0))
+        row = [engine, f"{volume:g}", st[3]]
+        for k in range(3):
+            row += [f"{st[k][0]:.4f}", f"{st[k][1]:.4f}"]
+        for k in range(3):
+            if dry is None or volume == 0.0:
+                row += ["", ""]
+            else:
+                row += [f"{st[k][0] - dry[k][0]:+.4f}",
+                        f"{math.sqrt(st[k][1] ** 2 + dry[k][1] ** 2):.4f}"]
+        rows.append(row)
+    header = ["engine", "volume_nl", "runs", "Rc_mid", "Rc_mid_se", "Rc_upper", "Rc_upper_se",
+              "outer_upper", "outer_upper_se", "shift_Rc_mid", "shift_Rc_mid_se",
+              "shift_Rc_upper", "shift_Rc_upper_se", "shift_outer_upper",
+              "shift_outer_upper_se"]
+    return header, rows
+
+
 def write_outputs(results, out):
     os.makedirs(out, exist_ok=True)
     rows = []
@@ -341,6 +389,7 @@ def write_outputs(results, out):
                "torque_Nm", "torque_sem_Nm",
                "bridges", "bridges_per_grain_z", "inertial_number", "band_rate_min_per_s",
                "seed"], rows)
+    write_csv(os.path.join(out, "band_shift.csv"), *band_shift_rows(results))
 
 
 def plot(results, out):
