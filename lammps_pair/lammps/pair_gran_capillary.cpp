@@ -136,6 +136,7 @@ PairGranCapillary::PairGranCapillary(LAMMPS *lmp) : Pair(lmp)
   contact_on = law_of = nullptr;
   rad_min = rad_max = nullptr;
   friction_wet = 1;
+  dashpot_floor = 0.0;
   dt = update->dt;
   freeze_group_bit = 0;
 
@@ -238,9 +239,20 @@ void PairGranCapillary::allocate()
 void PairGranCapillary::settings(int narg, char **arg)
 {
   friction_wet = 1;
+  dashpot_floor = 0.0;
   int iarg = 0;
   while (iarg < narg) {
-    if (strcmp(arg[iarg], "friction") == 0) {
+    if (strcmp(arg[iarg], "dashpot") == 0) {
+      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "pair_style gran/capillary dashpot", error);
+      if (strcmp(arg[iarg + 1], "approach") == 0)
+        dashpot_floor = 0.0;
+      else if (strcmp(arg[iarg + 1], "both") == 0)
+        dashpot_floor = -HUGE_VAL;
+      else
+        error->all(FLERR, "pair_style gran/capillary: dashpot '{}': allowed approach, both",
+                   arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "friction") == 0) {
       if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "pair_style gran/capillary friction", error);
       if (strcmp(arg[iarg + 1], "wet") == 0)
         friction_wet = 1;
@@ -251,8 +263,8 @@ void PairGranCapillary::settings(int narg, char **arg)
                    arg[iarg + 1]);
       iarg += 2;
     } else
-      error->all(FLERR, "pair_style gran/capillary: unknown keyword '{}': allowed friction",
-                 arg[iarg]);
+      error->all(FLERR, "pair_style gran/capillary: unknown keyword '{}': allowed friction, "
+                 "dashpot", arg[iarg]);
   }
 }
 
@@ -1035,9 +1047,10 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
     if (mask[i] & freeze_group_bit) meff = mj;
     if (mask[j] & freeze_group_bit) meff = mi;
 
-    // Richefeu 2007 eqs. 2, 3: the dashpot acts while the spheres approach; written without a
-    // branch (approach and separation alternate unpredictably from pair to pair)
-    const double closing = MAX(-gap_rate, 0.0);
+    // Richefeu 2007 eqs. 2, 3: the dashpot acts while the spheres approach (dashpot_floor 0;
+    // 'dashpot both': -inf, a linear dashpot both ways); written without a branch (approach
+    // and separation alternate unpredictably from pair to pair)
+    const double closing = MAX(-gap_rate, dashpot_floor);
     contact = tp.kn * (-gap) + tp.damping_coefficient * sqrt(meff) * closing;
 
     // relative tangential velocity at the contact point
@@ -1067,7 +1080,8 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
     fs2 = -k_t * shear[1];
     fs3 = -k_t * shear[2];
     const double fs = sqrt(fs1 * fs1 + fs2 * fs2 + fs3 * fs3);
-    const double limit = tp.mu * (contact + (friction_wet ? capillary : 0.0));
+    // (a dashpot acting both ways can pull: no friction from a tensile normal force)
+    const double limit = tp.mu * MAX(contact + (friction_wet ? capillary : 0.0), 0.0);
     if (fs > limit) {
       const double scale = fs > 0.0 ? limit / fs : 0.0;
       if (history_update) {
@@ -1315,14 +1329,14 @@ double PairGranCapillary::single(int i, int j, int itype, int jtype, double rsq,
     double meff = mi * mj / (mi + mj);
     if (atom->mask[i] & freeze_group_bit) meff = mj;
     if (atom->mask[j] & freeze_group_bit) meff = mi;
-    contact = kn[itype][jtype] * (-gap);
-    if (gap_rate < 0.0)
-      contact += 2.0 * damping[itype][jtype] * sqrt(meff * kn[itype][jtype]) * (-gap_rate);
+    contact = kn[itype][jtype] * (-gap) + 2.0 * damping[itype][jtype] *
+        sqrt(meff * kn[itype][jtype]) * MAX(-gap_rate, dashpot_floor);
     if (history) {
       const double *shear = &history[HIST_SHEAR];
       tangential = kt[itype][jtype] *
           sqrt(shear[0] * shear[0] + shear[1] * shear[1] + shear[2] * shear[2]);
-      const double limit = mu[itype][jtype] * (contact + (friction_wet ? capillary : 0.0));
+      const double limit =
+          mu[itype][jtype] * MAX(contact + (friction_wet ? capillary : 0.0), 0.0);
       tangential = MIN(tangential, limit);
     }
   }
@@ -1593,12 +1607,17 @@ void PairGranCapillary::read_restart(FILE *fp)
 void PairGranCapillary::write_restart_settings(FILE *fp)
 {
   fwrite(&friction_wet, sizeof(int), 1, fp);
+  fwrite(&dashpot_floor, sizeof(double), 1, fp);
 }
 
 void PairGranCapillary::read_restart_settings(FILE *fp)
 {
-  if (comm->me == 0) utils::sfread(FLERR, &friction_wet, sizeof(int), 1, fp, nullptr, error);
+  if (comm->me == 0) {
+    utils::sfread(FLERR, &friction_wet, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &dashpot_floor, sizeof(double), 1, fp, nullptr, error);
+  }
   MPI_Bcast(&friction_wet, 1, MPI_INT, 0, world);
+  MPI_Bcast(&dashpot_floor, 1, MPI_DOUBLE, 0, world);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -127,6 +127,8 @@ class PairGranCapillary : public Pair {
   };
 
   int friction_wet;    // 1: Coulomb limit mu (f_contact + f_capillary); 0: mu f_contact
+  double dashpot_floor;    // lower bound of the closing speed in the dashpot: 0 (approach
+                           // only, Richefeu 2007 eq. 3) or -inf (both ways, 'dashpot both')
   double dt;
   int freeze_group_bit;
 

@@ -3,6 +3,8 @@
 #  - friction: a sliding contact carries the Coulomb limit mu (f_contact + f_capillary)
 #    with 'friction wet' (Richefeu 2007 eq. 12 as documented), mu f_contact with
 #    'friction dry'; before it slides, k_t times the accumulated displacement;
+#  - the normal dashpot: the restitution of a head-on collision, 'dashpot approach' and
+#    'dashpot both', against the analytic values;
 #  - the neighbor reach: LAMMPS's neighbor cutoff is r1 + r2 + the rupture distance of
 #    the bridge volume in use (fixed: the pair_coeff volume; a protocol: vmax) + skin.
 . "$(dirname "$0")/lib.sh" "$@"
@@ -23,6 +25,21 @@ for friction in wet dry; do
     close_rel "friction $friction: sliding at mu (contact$( [ $friction = wet ] && echo ' + capillary'))" \
         "$(awk '$1 == 1000 { print $4 }' "$TMP/rows")" "$limit" 1e-12
     echo "friction $friction: tangential force at step 1000 $(awk '$1 == 1000 { print $4 }' "$TMP/rows") N, limit $limit N"
+done
+
+# the normal dashpot, c = 2 alpha sqrt(m_eff k_n), alpha = 0.3: the restitution of a head-on
+# collision.  'dashpot both' (linear spring-dashpot): e = exp(-pi a / sqrt(1 - a^2));
+# 'approach' (Richefeu 2007 eq. 3): damped to the deepest overlap, at t* with
+# tan(w_d t*) = sqrt(1 - a^2) / a, then an undamped unloading: e = exp(-a w_0 t*)
+for dashpot in both approach; do
+    log="$TMP/collision_$dashpot.log"
+    lmp 1 "$log" -in "$DECKS/in.collision" -var dashpot $dashpot -var alpha 0.3 >/dev/null 2>&1 ||
+        { fail "collision $dashpot: LAMMPS failed: $(grep -h -m1 ERROR "$log"*)"; continue; }
+    got=$(sed -n 's/^RESTITUTION //p' "$log" | head -1)
+    expected=$(awk -v d=$dashpot 'BEGIN { a = 0.3; s = sqrt(1 - a * a); pi = atan2(0, -1)
+        printf "%.17g", d == "both" ? exp(-pi * a / s) : exp(-a / s * atan2(s, a)) }')
+    close_rel "collision, dashpot $dashpot: restitution" "$got" "$expected" 2e-3
+    echo "collision, dashpot $dashpot: restitution $got, analytic $expected"
 done
 
 # the neighbor reach

@@ -28,6 +28,8 @@ expect unknown_law "unknown law 'richefoo': allowed richefeu, willett" \
     gran/capillary "100 40 0.3 0.4 law richefoo gamma 0.0728 volume 1e-12"
 expect unknown_style_keyword "pair_style gran/capillary: unknown keyword 'frictoin'" \
     "gran/capillary frictoin wet" "$GOOD"
+expect unknown_dashpot "pair_style gran/capillary: dashpot 'sometimes': allowed approach, both" \
+    "gran/capillary dashpot sometimes" "$GOOD"
 expect missing_coefficient "missing coefficient mu \(friction coefficient\) before 'law'" \
     gran/capillary "100 40 0.3 law richefeu gamma 0.0728 volume 1e-12"
 expect missing_gamma "law richefeu needs 'gamma' \(the surface tension, N/m\)" \
