@@ -261,6 +261,10 @@ def analyse(run, rate_min=None):
     bridges = th_shear[in_win, 4]
     liquid = th_shear[in_win, 5]
     grains = int(np.median([len(s["id"]) for s in snaps]))
+    lost = int(th[0, 2] - th[-1, 2])
+    if lost:
+        print(f"post.py: {run}: {lost} grain(s) lost during the run (dropped through the split; "
+              "see the deck's thermo_modify)", file=sys.stderr)
     return {
         "run": os.path.basename(os.path.normpath(run)), "params": P, "fits": fits,
         "omega": omega / Omega, "count": count / nsnap, "rc": rc_, "zc": zc_,
@@ -306,6 +310,11 @@ def write_csv(path, header, rows):
         w.writerows(rows)
 
 
+def engine_label(P):
+    """The engine, and the LAMMPS contact's dashpot where it is not the default."""
+    return P["engine"] + (" dashpot both" if P.get("dashpot") == "both" else "")
+
+
 def label(a):
     P = a["params"]
     v = P["volume_nl"]
@@ -332,7 +341,7 @@ def band_shift_rows(results):
         upper = f[f[:, 0] >= 0.5 * P["H"]]
         if not len(upper):
             continue
-        groups.setdefault((P["engine"], P["volume_nl"]), []).append(
+        groups.setdefault((engine_label(P), P["volume_nl"]), []).append(
             (a["Rc_mid"] / P["Rs"], upper[:, 1].mean() / P["Rs"],
              (upper[:, 1] + upper[:, 2]).mean() / P["Rs"]))
     stats = {key: [mean_se([r[k] for r in runs]) for k in range(3)] + [len(runs)]
@@ -363,7 +372,7 @@ def write_outputs(results, out):
     for a in results:
         P = a["params"]
         nb = float(np.mean(a["bridges"])) if len(a["bridges"]) else float("nan")
-        rows.append([a["run"], P["engine"], P["size"], P["law"] if P["volume_nl"] else "dry",
+        rows.append([a["run"], engine_label(P), P["size"], P["law"] if P["volume_nl"] else "dry",
                      P["volume_nl"], a["grains"], a["snapshots"], f"{a['z_mid'] / P['H']:.3f}",
                      f"{a['Rc_mid'] / P['Rs']:.4f}", f"{a['Rc_mid_se'] / P['Rs']:.4f}",
                      f"{a['W_mid'] / (2 * P['R']):.3f}",
@@ -411,7 +420,7 @@ def plot(results, out):
             ax.plot(a["rc"][m] / P["Rs"], a["omega"][m, j], "o", ms=3, color=col)
             rr = np.linspace(a["rc"][m].min(), a["rc"][m].max(), 200)
             ax.plot(rr / P["Rs"], [0.5 + 0.5 * erf((q - rcen) / W) for q in rr], "-", color=col,
-                    label=f"{label(a)} ({a['params']['engine']}), z/H={z / P['H']:.2f}")
+                    label=f"{label(a)} ({engine_label(a['params'])}), z/H={z / P['H']:.2f}")
     for ax in axes:
         ax.set_xlabel("r / R_s")
         ax.legend(fontsize=6)
@@ -428,7 +437,7 @@ def plot(results, out):
         f = np.array(a["fits"])
         col = colors[k % len(colors)]
         ax.plot(f[:, 1] / P["Rs"], f[:, 0] / P["H"], "-o", ms=3, color=col,
-                label=f"R_C {label(a)} ({P['engine']})")
+                label=f"R_C {label(a)} ({engine_label(P)})")
         ax.plot((f[:, 1] + f[:, 2]) / P["Rs"], f[:, 0] / P["H"], ":", color=col)
     ax.set_xlabel("r / R_s  (solid: R_C, dotted: R_C + W)")
     ax.set_ylabel("z / H")
@@ -448,7 +457,7 @@ def plot(results, out):
         ax.plot(a["p"][b], a["tau"][b], "o", ms=3, color=col, alpha=0.6)
         pp = np.linspace(0, a["p"][b].max(), 10)
         ax.plot(pp, a["mu"] * pp + a["c"], "-", color=col,
-                label=f"{label(a)} ({a['params']['engine']}): mu={a['mu']:.3f}, c={a['c']:.2f} Pa")
+                label=f"{label(a)} ({engine_label(a['params'])}): mu={a['mu']:.3f}, c={a['c']:.2f} Pa")
     ax.set_xlabel("p [Pa]")
     ax.set_ylabel("tau [Pa]")
     ax.legend(fontsize=7)
@@ -459,7 +468,7 @@ def plot(results, out):
     plt.close(fig)
     # torque
     fig, ax = plt.subplots(figsize=(max(5, 0.7 * len(results) + 2), 4.5))
-    names = [f"{label(a)}\n{a['params']['engine']}" for a in results]
+    names = [f"{label(a)}\n{engine_label(a['params'])}" for a in results]
     ax.bar(range(len(results)), [a["torque_mean"] * 1e3 for a in results],
            yerr=[a["torque_sem"] * 1e3 for a in results], color=colors[:len(results)])
     ax.set_xticks(range(len(results)))

@@ -5,13 +5,15 @@
 #
 # Usage: inputs/split_bottom/study.sh [-size smoke|default|large|paper] [-engines "lammps liggghts"]
 #                                     [-laws "weigert willett ..."] [-volumes "13.6 74.2"]
-#                                     [-seeds "0 1 2"] [-np N] [-publish]
+#                                     [-seeds "0 1 2"] [-dashpot both] [-np N] [-publish]
 #   defaults: -size default, both engines, Gladkyy's four laws (weigert willett
 #   willett/reduced rabinovich) and the other four of capbridge (richefeu
 #   rabinovich/uncorrected soulie table), volumes 13.6 and 74.2 nl, seed 0, -np 2.
 #   -seeds: every run once per seed (params.in: another packing of the same cell); seed 0
 #   is the run named ENGINE-LAW-VOLUME, seed N > 0 adds -seedN to the name.  -volumes ""
-#   runs dry only.
+#   runs dry only.  -dashpot both: LAMMPS's contact with the dashpot acting both ways
+#   (Gladkyy's contact, LIGGGHTS's hooke; in.lammps), run names get -both; LIGGGHTS has it
+#   anyway.
 #   The full matrix at default size is 2 engines x 17 runs x ~2 min on 2 idle cores: about 1 h 10 min.
 # With CAPBRIDGE_LOCK=FILE every run holds `flock FILE` (one heavy run at a time on a machine
 # shared by several jobs).
@@ -19,7 +21,7 @@
 # and a finished log is kept: delete it to run again); post.py writes out/split_bottom/study-SIZE/post/.
 set -euo pipefail
 top=$(cd "$(dirname "$0")/../.." && pwd)
-size=default engines="lammps liggghts" np=2 publish=0 seeds=0
+size=default engines="lammps liggghts" np=2 publish=0 seeds=0 dashpot=approach
 laws="weigert willett willett/reduced rabinovich richefeu rabinovich/uncorrected soulie table"
 volumes="13.6 74.2"
 while [ $# -gt 0 ]; do
@@ -29,11 +31,13 @@ while [ $# -gt 0 ]; do
     -laws) laws=$2; shift 2 ;;
     -volumes) volumes=$2; shift 2 ;;
     -seeds) seeds=$2; shift 2 ;;
+    -dashpot) dashpot=$2; shift 2 ;;
     -np) np=$2; shift 2 ;;
     -publish) publish=1; shift ;;
-    *) sed -n '6,15p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2 ;;
+    *) sed -n '6,17p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2 ;;
   esac
 done
+case $dashpot in approach|both) ;; *) echo "study.sh: -dashpot takes approach or both, not '$dashpot'" >&2; exit 2 ;; esac
 for seed in $seeds; do
   case $seed in ''|*[!0-9]*) echo "study.sh: -seeds takes whole numbers >= 0, not '$seed'" >&2; exit 2 ;; esac
 done
@@ -46,6 +50,7 @@ one() {  # engine law volume seed
   local name="$1-${2//\//_}-$3"
   [ "$3" != 0 ] || name="$1-dry"
   [ "$4" = 0 ] || name="$name-seed$4"
+  [ "$dashpot" = approach ] || [ "$1" != lammps ] || name="$name-$dashpot"
   local out="$study/$name"
   runs+=("$out")
   if grep -qs "^SPLIT_BOTTOM_DONE" "$out"/log.*; then
@@ -56,7 +61,8 @@ one() {  # engine law volume seed
   local t0=$SECONDS
   CAPBRIDGE_SKIP_CONFIGURE=${CAPBRIDGE_SKIP_CONFIGURE:-1} "${lock[@]}" \
     "$top/scripts/scene.sh" "$1" split_bottom -np "$np" -size "$size" -out "$out" \
-    -var law "$2" -var volume "$3" -var seed "$4" > "$study/$name.out" 2>&1
+    -var law "$2" -var volume "$3" -var seed "$4" -var dashpot "$dashpot" \
+    > "$study/$name.out" 2>&1
   echo "study: $name took $((SECONDS - t0)) s"
 }
 for engine in $engines; do
