@@ -80,7 +80,7 @@ if [ "$publish" = 1 ]; then
   dest=$top/docs/results/split_bottom   # the smoke figures; other sizes in a subdirectory
   [ "$size" = smoke ] || dest=$dest/$size
   mkdir -p "$dest"
-  cp "$study/post/summary.csv" "$study/post/"*.png "$dest/"
+  cp "$study/post/summary.csv" "$study/post/band_shift.csv" "$study/post/"*.png "$dest/"
   cp "$study/post/"*_band.csv "$dest/"
-  echo "study: copied summary.csv, *_band.csv and the plots to $dest"
+  echo "study: copied summary.csv, band_shift.csv, *_band.csv and the plots to $dest"
 fi
