@@ -233,14 +233,14 @@ def analyse(run, rate_min=None):
     mid = min(fits, key=lambda f: abs(f[0] - 0.5 * H))
     rc_mid_se = block_jackknife_rc(count_of, wsum_of, mid, zc_, rc_, dense, Omega)
     # tau = mu p + c over the band cells; the intercept's standard error from the fit
-    c_se = float("nan")
-    if band.sum() >= 3:
+    mu = c0 = c_se = inertial = float("nan")
+    if band.sum() >= 4:  # numpy's covariance needs more points than parameters + 2
+        (mu, c0), cov = np.polyfit(p[band], tau[band], 1, cov=True)
+        c_se = float(math.sqrt(cov[1, 1]))
+    elif band.sum() == 3:
         mu, c0 = np.polyfit(p[band], tau[band], 1)
-        if band.sum() >= 4:  # numpy's covariance needs more points than parameters + 2
-            c_se = float(math.sqrt(np.polyfit(p[band], tau[band], 1, cov=True)[1][1, 1]))
+    if band.sum() >= 3:
         inertial = float(np.median(gdot[band] * d / np.sqrt(np.maximum(p[band], 1e-30) / P["rho"])))
-    else:
-        mu = c0 = inertial = float("nan")
     # time series: averaging window is t >= tavg after the start of the shear
     dt = P["dt"]
     tt = torque[:, 0] * dt

@@ -13,7 +13,10 @@ physics of the cell with inputs/split_bottom/post.py's analysis:
     bridges with the wall grains included: a wet packing's contacts and near contacts), and with a fixed volume per bridge the liquid in bridges is exactly
     bridges x V (1e-12 relative) at every output;
   * the bridges hold the packing together: the torque needed to drive the wet cell is
-    above the dry one.
+    above the dry one;
+  * post.py's own numbers: every fitted band centre inside the cell, the standard error of
+    R_C at mid height positive and below a grain diameter, and band_shift's shift equal to
+    wet minus dry from the two analyses.
 
 Usage: split_bottom_check.py WORKDIR"""
 import os
@@ -75,6 +78,23 @@ def main():
     check(err <= 1e-12, f"wet: liquid in bridges = bridges x V to {err:.1e} relative (<= 1e-12)")
     check(wet["torque_mean"] > dry["torque_mean"] > 0,
           f"torque wet {wet['torque_mean'] * 1e3:.3f} mN m > dry {dry['torque_mean'] * 1e3:.3f} mN m > 0")
+    P = dry["params"]
+    fits = np.array(dry["fits"] + wet["fits"])
+    check(np.all((fits[:, 1] > P["Ri"]) & (fits[:, 1] < P["Ro"]) & (fits[:, 2] > 0)),
+          f"every fitted band centre inside the cell ({P['Ri'] * 1e3:.1f}, {P['Ro'] * 1e3:.1f}) mm, "
+          f"every width > 0 ({len(fits)} heights)")
+    for a, tag in ((dry, "dry"), (wet, "wet")):
+        se = a["Rc_mid_se"]
+        check(0 < se < 2 * a["params"]["R"],
+              f"{tag}: standard error of R_C at mid height {se * 1e3:.3f} mm, in (0, one grain "
+              "diameter)")
+    # band_shift.csv's wet-minus-dry shift at mid height, against the two analyses directly
+    header, rows = post.band_shift_rows([dry, wet])
+    row = dict(zip(header, next(r for r in rows if float(r[1]) == V_NL)))
+    expected = (wet["Rc_mid"] - dry["Rc_mid"]) / P["Rs"]
+    check(abs(float(row["shift_Rc_mid"]) - expected) <= 5e-5,
+          f"band_shift: shift of R_C at mid height {row['shift_Rc_mid']} Rs = wet - dry "
+          f"{expected:+.5f} Rs")
     print(f"band centre at mid height: dry {dry['Rc_mid'] * 1e3:.2f} mm, wet {wet['Rc_mid'] * 1e3:.2f} mm "
           "(reported, not asserted: the smoke cell is too small to resolve the shift)")
     if failures:
