@@ -195,13 +195,25 @@ static inline int cb_certainly_apart(double rsq, double radsum)
 
 /* -------------------------------------------------------- bridge state */
 
-/* The state of the liquid bridge of one pair, kept by the engine in its pair history.
- * Plain data: the engine may copy it as an array of CB_BRIDGE_DOUBLES doubles. */
+/* The state of the liquid bridge of one pair, kept by the engine in its pair history and
+ * changed only by the calls below.  volume and active are the state; the other four are
+ * derived from the volume, the two radii and the law whenever a bridge forms or its volume
+ * is set (cb_bridge_set_volume), so that a bridge in contact costs no force-law evaluation
+ * and a stretched one no rupture distance per step.  They are derived again by the calls
+ * below when the radii differ from the ones stored (a grain that grows or shrinks); after
+ * the law changes (new coefficients between two runs, a restart) the engine derives them
+ * again with cb_bridge_set_volume(..., bridge->volume, ...).
+ * Plain data: the engine may copy it as an array of CB_BRIDGE_DOUBLES doubles.  A dry
+ * bridge is all zero. */
 typedef struct cb_bridge {
-    double volume;   /* liquid in the bridge [m^3]; 0 when there is no bridge */
-    double active;   /* 1.0 while the bridge exists, 0.0 otherwise (a double for history) */
+    double volume;         /* liquid in the bridge [m^3]; 0 when there is no bridge */
+    double active;         /* 1.0 while the bridge exists, 0.0 otherwise (a double for history) */
+    double rupture;        /* rupture distance of this volume between these radii [m] */
+    double force_contact;  /* the force at gap 0 [N] */
+    double radius_sum;     /* r1 + r2 and r1 r2 of the radii the two above are for */
+    double radius_product;
 } cb_bridge;
-#define CB_BRIDGE_DOUBLES 2
+#define CB_BRIDGE_DOUBLES 6
 
 typedef enum cb_transition {
     CB_BRIDGE_STAYS_DRY = 0, /* no bridge before, none now */
@@ -220,11 +232,22 @@ cb_status cb_bridge_update(const cb_law *law, double r1, double r2, double gap,
                            cb_transition *transition, double *released_volume);
 
 /* cb_bridge_update, then the capillary force of the bridge's new state at this gap (as
- * cb_force; 0 without a bridge): the call of an engine's pair loop, which computes the
- * pair's radii conventions and the rupture distance once instead of twice. */
+ * cb_bridge_force): the call of an engine's pair loop. */
 cb_status cb_bridge_step(const cb_law *law, double r1, double r2, double gap,
                          double available_volume, cb_bridge *bridge, cb_transition *transition,
                          double *released_volume, double *force);
+
+/* The capillary force of the bridge at this gap, without advancing it: equal to
+ * cb_force(law, r1, r2, bridge->volume, gap) while it exists, else 0. */
+cb_status cb_bridge_force(const cb_law *law, double r1, double r2, double gap,
+                          const cb_bridge *bridge, double *force);
+
+/* Set the bridge's volume (a liquid protocol moves liquid into or out of it) and derive
+ * its constants for these radii and this law: volume 0 makes it dry.  Called with the
+ * bridge's own volume, it derives them again after the law changed.  A volume the law
+ * refuses (validity strict) is an error, and the bridge is left as it was. */
+cb_status cb_bridge_set_volume(const cb_law *law, double r1, double r2, double volume,
+                               cb_bridge *bridge);
 
 /* ------------------------------------------------------ liquid protocols */
 

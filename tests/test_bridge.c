@@ -1,6 +1,8 @@
 /* test_bridge.c — the bridge state and its transitions (cb_bridge_update), and
  * cb_bridge_step: every update below is made by both calls, which must agree bit for bit,
- * and the step's force must be cb_force of the new state.
+ * and the step's force (and cb_bridge_force's) must be cb_force of the new state: the
+ * constants a bridge keeps (its rupture distance and force at contact) are checked against
+ * the stateless calls that evaluate the law every time.
  *
  * Rupture distances are recomputed here from the published formulas (Richefeu eq. 6 for
  * Lian's rule, Gladkyy eq. 2 for Willett's), not taken from the library, wherever the
@@ -67,7 +69,19 @@ static cb_transition step(const cb_law *law, double r1, double r2, double gap, d
     if (bridge->active == 1.0)
         CHECK_STATUS(cb_force(law, r1, r2, bridge->volume, gap, &expected_force, NULL), CB_OK);
     CHECK(same_bits(force, expected_force));
+    double bridge_force = -1.0;
+    CHECK_STATUS(cb_bridge_force(law, r1, r2, gap, bridge, &bridge_force), CB_OK);
+    CHECK(same_bits(bridge_force, expected_force));
     return t;
+}
+
+/* An active bridge of this volume, as a liquid protocol makes it. */
+static cb_bridge active_bridge(const cb_law *law, double r1, double r2, double volume)
+{
+    cb_bridge b = {0};
+    CHECK_STATUS(cb_bridge_set_volume(law, r1, r2, volume, &b), CB_OK);
+    CHECK(b.active == 1.0 && same_bits(b.volume, volume));
+    return b;
 }
 
 /* The full life cycle on a scripted gap sequence, for a law whose rupture distance for
@@ -75,7 +89,7 @@ static cb_transition step(const cb_law *law, double r1, double r2, double gap, d
 static void life_cycle(const cb_law *law, double r1, double r2, double volume,
                        double expected_rupture)
 {
-    cb_bridge b = {0.0, 0.0};
+    cb_bridge b = {0};
     double released = -1.0;
     double d = 0.0;
     CHECK_STATUS(cb_rupture_distance(law, r1, r2, volume, &d), CB_OK);
@@ -121,14 +135,14 @@ static void life_cycle(const cb_law *law, double r1, double r2, double volume,
     CHECK(same_bits(b.volume, 0.5 * volume));
 
     /* The boundary to the last representable gap: d held, the next double ruptures. */
-    cb_bridge c = {volume, 1.0};
+    cb_bridge c = active_bridge(law, r1, r2, volume);
     CHECK(step(law, r1, r2, d, 0.0, &c, &released) == CB_BRIDGE_HELD);
     CHECK(step(law, r1, r2, nextafter(d, HUGE_VAL), 0.0, &c, &released) ==
           CB_BRIDGE_RUPTURED);
     CHECK(same_bits(released, volume));
 
     /* Overlap keeps a bridge, however deep. */
-    cb_bridge o = {volume, 1.0};
+    cb_bridge o = active_bridge(law, r1, r2, volume);
     const double overlaps[] = {-1e-9, -1e-5, -0.1 * r1, -r1};
     for (size_t i = 0; i < sizeof overlaps / sizeof overlaps[0]; ++i) {
         CHECK(step(law, r1, r2, overlaps[i], 0.0, &o, &released) == CB_BRIDGE_HELD);
@@ -152,7 +166,7 @@ static void random_sequences(const cb_law *law, double theta_degrees)
     for (int run = 0; run < 200; ++run) {
         double r1 = 1e-3 * (0.4 + 0.25 * uniform());
         double r2 = 1e-3 * (0.4 + 0.25 * uniform());
-        cb_bridge b = {0.0, 0.0};
+        cb_bridge b = {0};
         double ref_volume = 0.0; /* the reference: 0 when dry */
         double gap = 0.0;
         for (int i = 0; i < 400; ++i) {
@@ -221,7 +235,7 @@ static void expect_error(const cb_law *law, double r1, double r2, double gap, do
 static void errors(const cb_law *law)
 {
     const double v = 1e-12, r = 5e-4;
-    cb_bridge dry = {0.0, 0.0}, wet = {v, 1.0};
+    cb_bridge dry = {0}, wet = active_bridge(law, r, r, v);
     cb_transition t;
     double released;
     CHECK_STATUS(cb_bridge_update(NULL, r, r, 0.0, v, &dry, &t, &released), CB_ERR_NULL);
@@ -246,28 +260,47 @@ static void errors(const cb_law *law)
         expect_error(law, r, bad[i], 1e-6, v, wet, CB_ERR_NOT_FINITE);
         expect_error(law, r, r, bad[i], v, wet, CB_ERR_NOT_FINITE);
         expect_error(law, r, r, -1e-6, bad[i], dry, CB_ERR_NOT_FINITE);
-        cb_bridge corrupt = {bad[i], 1.0};
-        expect_error(law, r, r, 1e-6, v, corrupt, CB_ERR_NOT_FINITE);
-        cb_bridge corrupt_flag = {v, bad[i]};
-        expect_error(law, r, r, 1e-6, v, corrupt_flag, CB_ERR_NOT_FINITE);
+        /* any of the six doubles of a stored bridge */
+        for (int k = 0; k < CB_BRIDGE_DOUBLES; ++k) {
+            cb_bridge corrupt = wet;
+            ((double *)&corrupt)[k] = bad[i];
+            expect_error(law, r, r, 1e-6, v, corrupt, CB_ERR_NOT_FINITE);
+        }
     }
     expect_error(law, 0.0, r, 0.0, v, dry, CB_ERR_NEGATIVE);
     expect_error(law, r, -r, 0.0, v, wet, CB_ERR_NEGATIVE);
     expect_error(law, r, r, -1e-6, -v, dry, CB_ERR_NEGATIVE);
     expect_error(law, r, r, -1e-6, -0.0 - 1e-300, dry, CB_ERR_NEGATIVE);
 
-    /* States that are neither dry {0, 0} nor active {V > 0, 1}. */
-    cb_bridge negative = {-v, 1.0}, empty_active = {0.0, 1.0}, liquid_inactive = {v, 0.0},
-              half = {v, 0.5}, two = {v, 2.0}, negative_dry = {-v, 0.0};
+    /* States that are neither dry (all zero) nor active {V > 0, 1, constants > 0}. */
+    cb_bridge negative = wet, empty_active = wet, liquid_inactive = dry, half = wet, two = wet,
+              negative_dry = dry;
+    negative.volume = -v;
+    empty_active.volume = 0.0;
+    liquid_inactive.volume = v;
+    half.active = 0.5;
+    two.active = 2.0;
+    negative_dry.volume = -v;
     expect_error(law, r, r, 1e-6, v, negative, CB_ERR_NEGATIVE);
     expect_error(law, r, r, 1e-6, v, empty_active, CB_ERR_NEGATIVE);
     expect_error(law, r, r, -1e-6, v, liquid_inactive, CB_ERR_RANGE);
     expect_error(law, r, r, 1e-6, v, half, CB_ERR_RANGE);
     expect_error(law, r, r, 1e-6, v, two, CB_ERR_RANGE);
     expect_error(law, r, r, 1e-6, v, negative_dry, CB_ERR_NEGATIVE);
+    /* an active bridge without its constants, and a dry one with some */
+    for (int k = 2; k < CB_BRIDGE_DOUBLES; ++k) {
+        cb_bridge zero_constant = wet, negative_constant = wet, dry_constant = dry;
+        ((double *)&zero_constant)[k] = 0.0;
+        ((double *)&negative_constant)[k] = -1.0;
+        ((double *)&dry_constant)[k] = 1.0;
+        /* (the contact force may be 0: a law with none at contact) */
+        if (k != 3) expect_error(law, r, r, -1e-6, v, zero_constant, CB_ERR_NEGATIVE);
+        expect_error(law, r, r, -1e-6, v, negative_constant, CB_ERR_NEGATIVE);
+        expect_error(law, r, r, -1e-6, v, dry_constant, CB_ERR_RANGE);
+    }
 
     /* -0.0 is a dry volume and a contact gap. */
-    cb_bridge minus_zero = {-0.0, 0.0};
+    cb_bridge minus_zero = {-0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     CHECK(step(law, r, r, -0.0, v, &minus_zero, &released) == CB_BRIDGE_FORMED);
     CHECK(same_bits(minus_zero.volume, v));
 }
@@ -278,27 +311,37 @@ static void strict_validity(void)
 {
     const double v = 1e-12, r = 5e-4;
     cb_law strict = make_law(20.0, NULL, "strict");
-    cb_bridge dry = {0.0, 0.0}, wet = {v, 1.0};
+    cb_law extend = make_law(20.0, NULL, NULL);
+    /* a bridge formed before the law turned strict (new coefficients between two runs) */
+    cb_bridge dry = {0}, wet = active_bridge(&extend, r, r, v);
     expect_error(&strict, r, r, -1e-7, v, dry, CB_ERR_OUT_OF_VALIDITY);
-    expect_error(&strict, r, r, 1e-6, v, wet, CB_ERR_OUT_OF_VALIDITY);
-    /* Outside the range but nothing to evaluate: dry apart, or held in overlap. */
+    /* Outside the range but nothing to evaluate: dry apart, or its stored rupture
+     * distance; a stretched bridge's force is refused, so the step is refused whole. */
     double released = -1.0;
     cb_bridge b = dry;
     CHECK(step(&strict, r, r, 1e-6, v, &b, &released) == CB_BRIDGE_STAYS_DRY);
     b = wet;
     cb_transition t = (cb_transition)-1;
-    CHECK_STATUS(cb_bridge_update(&strict, r, r, -1e-7, v, &b, &t, &released), CB_OK);
-    CHECK(t == CB_BRIDGE_HELD);
-    /* ... but its force is refused, so cb_bridge_step (update and force) is refused whole */
-    double force = 0.0;
-    CHECK_STATUS(cb_force(&strict, r, r, v, -1e-7, &force, NULL), CB_ERR_OUT_OF_VALIDITY);
-    b = wet;
+    CHECK_STATUS(cb_bridge_update(&strict, r, r, 1e-6, 0.0, &b, &t, &released), CB_OK);
+    CHECK(t == CB_BRIDGE_HELD && memcmp(&b, &wet, sizeof b) == 0);
+    double force = 5.0;
     t = (cb_transition)77;
-    released = force = 5.0;
-    CHECK_STATUS(cb_bridge_step(&strict, r, r, -1e-7, 0.0, &b, &t, &released, &force),
+    released = 5.0;
+    CHECK_STATUS(cb_bridge_step(&strict, r, r, 1e-6, 0.0, &b, &t, &released, &force),
                  CB_ERR_OUT_OF_VALIDITY);
     CHECK(memcmp(&b, &wet, sizeof b) == 0 && t == (cb_transition)77 && released == 5.0 &&
           force == 5.0);
+    /* Deriving the bridge's constants again under the strict law is refused, and leaves
+     * it as it was; so is setting a volume the law refuses. */
+    b = wet;
+    CHECK_STATUS(cb_bridge_set_volume(&strict, r, r, v, &b), CB_ERR_OUT_OF_VALIDITY);
+    CHECK(memcmp(&b, &wet, sizeof b) == 0);
+    b = dry;
+    CHECK_STATUS(cb_bridge_set_volume(&strict, r, r, v, &b), CB_ERR_OUT_OF_VALIDITY);
+    CHECK(memcmp(&b, &dry, sizeof b) == 0);
+    /* ... and so is a bridge whose grains changed size, which is derived again in overlap */
+    expect_error(&strict, r, 1.1 * r, -1e-7, 0.0, wet, CB_ERR_OUT_OF_VALIDITY);
+    cb_law_release(&extend);
 
     cb_law strict_ok = make_law(0.0, NULL, "strict");
     b = dry;
@@ -312,7 +355,7 @@ static void strict_validity(void)
 static void plain_data(const cb_law *law)
 {
     CHECK(sizeof(cb_bridge) == CB_BRIDGE_DOUBLES * sizeof(double));
-    double history[CB_BRIDGE_DOUBLES] = {0.0, 0.0};
+    double history[CB_BRIDGE_DOUBLES] = {0};
     cb_bridge b;
     memcpy(&b, history, sizeof b);
     double released;
@@ -322,6 +365,105 @@ static void plain_data(const cb_law *law)
     memcpy(&again, history, sizeof again);
     CHECK(step(law, 5e-4, 6e-4, 1e-6, 0.0, &again, &released) == CB_BRIDGE_HELD);
     CHECK(same_bits(again.volume, 3e-12));
+}
+
+/* The constants a bridge keeps: those of the stateless calls, bit for bit; derived again
+ * when the grains change size (not when they only swap places) and, through
+ * cb_bridge_set_volume, when the law changes. */
+static void derived_constants(void)
+{
+    const double r1 = 0.5e-3, r2 = 0.62e-3, v = 4e-12;
+    cb_law law = make_law(10.0, "willett", NULL); /* Willett's rule depends on the radii */
+    cb_bridge b = active_bridge(&law, r1, r2, v);
+    double d = 0.0, f0 = 0.0;
+    CHECK_STATUS(cb_rupture_distance(&law, r1, r2, v, &d), CB_OK);
+    CHECK_STATUS(cb_force(&law, r1, r2, v, 0.0, &f0, NULL), CB_OK);
+    CHECK(same_bits(b.rupture, d) && same_bits(b.force_contact, f0) && f0 > 0.0);
+    CHECK(b.radius_sum == r1 + r2 && b.radius_product == r1 * r2);
+
+    /* the same pair seen from the other grain: nothing to derive */
+    cb_bridge swapped = b;
+    double released = -1.0;
+    CHECK(step(&law, r2, r1, 0.3 * d, 0.0, &swapped, &released) == CB_BRIDGE_HELD);
+    CHECK(memcmp(&swapped, &b, sizeof b) == 0);
+
+    /* a grain shrinks or grows: the stored rupture distance no longer holds (Willett's
+     * d falls with R_h) */
+    const double shrunk = 0.3 * r2, grown = 3.0 * r2;
+    double d_shrunk = 0.0, d_grown = 0.0;
+    CHECK_STATUS(cb_rupture_distance(&law, r1, shrunk, v, &d_shrunk), CB_OK);
+    CHECK_STATUS(cb_rupture_distance(&law, r1, grown, v, &d_grown), CB_OK);
+    CHECK(d_shrunk > 1.001 * d && d_grown < 0.999 * d);
+    cb_bridge c = b;
+    CHECK(step(&law, r1, shrunk, 0.5 * (d + d_shrunk), 0.0, &c, &released) == CB_BRIDGE_HELD);
+    CHECK(same_bits(c.rupture, d_shrunk) && c.radius_product == r1 * shrunk);
+    c = b;
+    CHECK(step(&law, r1, grown, 0.5 * (d + d_grown), 0.0, &c, &released) ==
+          CB_BRIDGE_RUPTURED);
+    CHECK(same_bits(released, v));
+    c = b;
+    CHECK(step(&law, r1, grown, -1e-7, 0.0, &c, &released) == CB_BRIDGE_HELD);
+    CHECK(same_bits(c.rupture, d_grown));
+
+    /* the law changes: set_volume with the bridge's own volume derives it again */
+    cb_law weaker = law;
+    cb_message msg;
+    CHECK_STATUS(cb_law_configure(&weaker, "gamma", "0.05", &msg), CB_OK);
+    CHECK_STATUS(cb_law_prepare(&weaker, &msg), CB_OK);
+    c = b;
+    CHECK_STATUS(cb_bridge_set_volume(&weaker, r1, r2, c.volume, &c), CB_OK);
+    double f_weaker = 0.0;
+    CHECK_STATUS(cb_force(&weaker, r1, r2, v, 0.0, &f_weaker, NULL), CB_OK);
+    CHECK(same_bits(c.force_contact, f_weaker));
+    CHECK_REL(c.force_contact, f0 * 0.05 / 0.072, 1e-14);
+    CHECK(step(&weaker, r1, r2, -1e-6, 0.0, &c, &released) == CB_BRIDGE_HELD);
+
+    /* a protocol moves liquid: new constants; volume 0 makes it dry (all zero) */
+    c = b;
+    CHECK_STATUS(cb_bridge_set_volume(&law, r1, r2, 2.0 * v, &c), CB_OK);
+    double d2 = 0.0;
+    CHECK_STATUS(cb_rupture_distance(&law, r1, r2, 2.0 * v, &d2), CB_OK);
+    CHECK(same_bits(c.rupture, d2) && same_bits(c.volume, 2.0 * v));
+    CHECK_STATUS(cb_bridge_set_volume(&law, r1, r2, 0.0, &c), CB_OK);
+    const cb_bridge dry = {0};
+    CHECK(memcmp(&c, &dry, sizeof c) == 0);
+
+    /* bad input to set_volume and cb_bridge_force: an error, nothing changed */
+    const double bad[] = {NAN, HUGE_VAL, -1e-12};
+    const cb_status why[] = {CB_ERR_NOT_FINITE, CB_ERR_NOT_FINITE, CB_ERR_NEGATIVE};
+    for (int i = 0; i < 3; ++i) {
+        c = b;
+        CHECK_STATUS(cb_bridge_set_volume(&law, r1, r2, bad[i], &c), why[i]);
+        CHECK_STATUS(cb_bridge_set_volume(&law, bad[i], r2, v, &c), why[i]);
+        CHECK(memcmp(&c, &b, sizeof c) == 0);
+        double force = 3.0;
+        CHECK_STATUS(cb_bridge_force(&law, r1, bad[i], 0.0, &b, &force), why[i]);
+        CHECK(force == 3.0);
+    }
+    double force = 3.0;
+    CHECK_STATUS(cb_bridge_force(&law, r1, r2, NAN, &b, &force), CB_ERR_NOT_FINITE);
+    CHECK_STATUS(cb_bridge_force(NULL, r1, r2, 0.0, &b, &force), CB_ERR_NULL);
+    CHECK_STATUS(cb_bridge_force(&law, r1, r2, 0.0, NULL, &force), CB_ERR_NULL);
+    CHECK_STATUS(cb_bridge_force(&law, r1, r2, 0.0, &b, NULL), CB_ERR_NULL);
+    CHECK_STATUS(cb_bridge_set_volume(NULL, r1, r2, v, &c), CB_ERR_NULL);
+    CHECK_STATUS(cb_bridge_set_volume(&law, r1, r2, v, NULL), CB_ERR_NULL);
+    cb_bridge corrupt = b;
+    corrupt.active = 0.5;
+    c = corrupt;
+    CHECK_STATUS(cb_bridge_set_volume(&law, r1, r2, v, &c), CB_ERR_RANGE);
+    CHECK(memcmp(&c, &corrupt, sizeof c) == 0);
+    CHECK(force == 3.0);
+
+    /* Gladkyy eq. 4 (overlap none): the stored contact force applies at gap 0 only */
+    cb_law no_overlap = law;
+    CHECK_STATUS(cb_law_configure(&no_overlap, "overlap", "none", &msg), CB_OK);
+    CHECK_STATUS(cb_law_prepare(&no_overlap, &msg), CB_OK);
+    c = active_bridge(&no_overlap, r1, r2, v);
+    CHECK_STATUS(cb_bridge_force(&no_overlap, r1, r2, -1e-7, &c, &force), CB_OK);
+    CHECK(force == 0.0);
+    CHECK(step(&no_overlap, r1, r2, 0.0, 0.0, &c, &released) == CB_BRIDGE_HELD);
+    CHECK(step(&no_overlap, r1, r2, -1e-7, 0.0, &c, &released) == CB_BRIDGE_HELD);
+    cb_law_release(&law);
 }
 
 /* cb_certainly_apart may skip a pair only where the gap an engine computes, sqrt(rsq) -
@@ -370,6 +512,7 @@ int main(int argc, char **argv)
     random_sequences(&lian30, 30.0);
     errors(&lian);
     strict_validity();
+    derived_constants();
     plain_data(&lian);
     certainly_apart();
 

@@ -16,10 +16,13 @@
      We read eq. 12 of Richefeu 2007, mu (f_n - f_n^c), with f_n the contact force and
      f_n^c = -f_capillary the (attractive, negative) capillary force: the capillary
      attraction adds to the normal load that friction can mobilise.
-   bridge    the cb_bridge of the pair (volume, active) in the pair history; its
-     transitions are the core's (cb_bridge_step, which gives the force of the new state
-     too): formation at contact with liquid available, rupture beyond the law's rupture
-     distance.
+   bridge    the cb_bridge of the pair in the pair history (its volume, and constants the
+     core derives from it: the force of a bridge in contact is not evaluated again each
+     step); its transitions are the core's (cb_bridge_step, which gives the force of the
+     new state too): formation at contact with liquid available, rupture beyond the law's
+     rupture distance.  A liquid protocol sets a bridge's volume with
+     cb_bridge_set_volume, and derive_bridges() derives every bridge again at the setup of
+     each run (the coefficients may have changed since the bridges formed).
 
    Liquid (the volume a new bridge receives, where a broken bridge's liquid goes):
      fixed      the type pair's `volume` (or fix capillary/liquid fixed V)
@@ -712,12 +715,41 @@ void PairGranCapillary::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   if (neighbor->ago == 0) check_timestep();    // at setup and after every re-neighboring
+  if (update->setupflag) derive_bridges();
 
   if (liquid_mode == LIQUID_PROTOCOL2 || liquid_mode == LIQUID_PROTOCOL3) {
     update_bridges();
     exchange_liquid();
   }
   form_bridges_and_forces();
+}
+
+/* ----------------------------------------------------------------------
+   at the setup of each run: every bridge's constants (cb_bridge) derived again under the
+   current coefficients, which pair_coeff may have changed since the last run, or which a
+   restart file does not hold (bridges read from it keep their volume)
+------------------------------------------------------------------------- */
+
+void PairGranCapillary::derive_bridges()
+{
+  double *radius = atom->radius;
+  int *type = atom->type;
+  int **firsttouch = fix_history->firstflag;
+  double **firstvalue = fix_history->firstvalue;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    int *jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      if (firsttouch[i][jj] == 0) continue;    // flagged 0: no bridge (see pair_force)
+      cb_bridge *bridge = bridge_of(&firstvalue[i][SIZE_HISTORY * jj]);
+      if (bridge->active == 0.0) continue;
+      const int j = jlist[jj] & NEIGHMASK;
+      const int status = cb_bridge_set_volume(law(type[i], type[j]), radius[i], radius[j],
+                                              bridge->volume, bridge);
+      check_cb(status, "bridge constants at setup", type[i], type[j], radius[i], radius[j],
+               bridge->volume, 0.0);
+    }
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -796,7 +828,7 @@ void PairGranCapillary::update_bridges()
             // held beyond the reach (a volume above the one the reach was built for):
             // ruptured here, before the pair leaves the neighbor list with its liquid
             vol = bridge->volume;
-            bridge->volume = bridge->active = 0.0;
+            *bridge = cb_bridge{};
             if (counted(i, j)) n_reach += 1.0;
           }
         }
@@ -958,11 +990,17 @@ void PairGranCapillary::form_bridges_and_forces()
           }
         } else {
           if (protocol3) {
-            if (deposit[i] > 0.0 && best_partner[i] == tag[j]) bridge->volume += deposit[i];
-            if (deposit[j] > 0.0 && best_partner[j] == tag[i]) bridge->volume += deposit[j];
+            double deposited = 0.0;
+            if (deposit[i] > 0.0 && best_partner[i] == tag[j]) deposited += deposit[i];
+            if (deposit[j] > 0.0 && best_partner[j] == tag[i]) deposited += deposit[j];
+            if (deposited > 0.0) {
+              const double grown = bridge->volume + deposited;
+              int status = cb_bridge_set_volume(pair_law, radius[i], radius[j], grown, bridge);
+              check_cb(status, "Protocol 3 deposit", itype, jtype, radius[i], radius[j], grown,
+                       gap);
+            }
           }
-          int status = cb_force(pair_law, radius[i], radius[j], bridge->volume, gap, &capillary,
-                                nullptr);
+          int status = cb_bridge_force(pair_law, radius[i], radius[j], gap, bridge, &capillary);
           check_cb(status, "capillary force", itype, jtype, radius[i], radius[j],
                    bridge->volume, gap);
         }
@@ -984,7 +1022,7 @@ void PairGranCapillary::form_bridges_and_forces()
           // held beyond the reach (a volume above the one the reach was built for):
           // ruptured here, before the pair leaves the neighbor list with its liquid
           vol = bridge->volume;
-          bridge->volume = bridge->active = 0.0;
+          *bridge = cb_bridge{};
           capillary = 0.0;
           if (counted(i, j)) {
             n_reach += 1.0;
@@ -1310,9 +1348,7 @@ double PairGranCapillary::single(int i, int j, int itype, int jtype, double rsq,
     cb_bridge *bridge = bridge_of(history);
     active = bridge->active;
     vol = bridge->volume;
-  }
-  if (active != 0.0) {
-    int status = cb_force(law(itype, jtype), radi, radj, vol, gap, &capillary, nullptr);
+    int status = cb_bridge_force(law(itype, jtype), radi, radj, gap, bridge, &capillary);
     check_cb(status, "capillary force (single)", itype, jtype, radi, radj, vol, gap);
   }
 
@@ -1533,12 +1569,10 @@ int PairGranCapillary::protocol1(double total_liquid, double &alpha, double &lar
     cb_bridge *bridge = bridge_of(history);
     const int was = bridge->active != 0.0;
     const double gap = geometry[3 * k + 2];
-    if (mine[k] > 0.0) {
-      bridge->volume = mine[k];
-      bridge->active = 1.0;
-    } else {
-      bridge->volume = bridge->active = 0.0;
-    }
+    int status = cb_bridge_set_volume(law(type[i], type[j]), radius[i], radius[j], mine[k],
+                                      bridge);
+    check_cb(status, "Protocol 1 redistribution", type[i], type[j], radius[i], radius[j],
+             mine[k], gap);
     const int now = bridge->active != 0.0;
     const int in_contact = contact_on[type[i]][type[j]] && gap < 0.0;
     firsttouch[i][jj] = (now || in_contact) ? 1 : 0;

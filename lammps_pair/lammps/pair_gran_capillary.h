@@ -32,7 +32,9 @@ class PairGranCapillary : public Pair {
  public:
   // Layout of the pair history (doubles per neighbor pair):
   //   [0..2] tangential (shear) displacement, negated for the partner;
-  //   [3]    bridge volume [m^3], [4] bridge active (1.0 / 0.0): a cb_bridge, copied.
+  //   [3..8] the pair's cb_bridge, copied: volume [m^3], active (1.0 / 0.0), and the
+  //          constants the core derives from them (rupture distance, force at contact, the
+  //          radii they are for).
   enum { HIST_SHEAR = 0, HIST_BRIDGE = 3, SIZE_HISTORY = 3 + CB_BRIDGE_DOUBLES };
   // How bridges get their liquid.
   enum { LIQUID_FIXED = 0, LIQUID_PROTOCOL1, LIQUID_PROTOCOL2, LIQUID_PROTOCOL3 };
@@ -169,6 +171,7 @@ class PairGranCapillary : public Pair {
   }
   [[noreturn]] void fail_cb(int status, const char *what, int itype, int jtype, double r1,
                             double r2, double vol, double gap);
+  void derive_bridges();
   void update_bridges();
   void form_bridges_and_forces();
   void pair_force(const AtomArrays &a, const TypePair &tp, int i, int j, double delx,

@@ -15,13 +15,16 @@
    What lives where:
      - the force, the rupture distance, the bridge transitions (form / hold / rupture)
        and Richefeu's Protocol 2 (split of a broken bridge's liquid, take-all at
-       formation) are the core's: cb_force, cb_bridge_step, cb_protocol2_release,
+       formation) are the core's: cb_bridge_step, cb_bridge_force, cb_protocol2_release,
        cb_protocol2_take. This file only gathers the engine's data, stores the bridge
        state in LIGGGHTS's contact history and does the MPI communication.
-     - the bridge state of a pair {volume, active} is two values of the contact
-       history (capillaryBridgeVolume, capillaryBridgeActive): it moves with the atoms,
+     - the bridge state of a pair, a cb_bridge (its volume, and the constants the core
+       derives from it, so that a bridge in contact costs no force-law evaluation), is
+       six values of the contact history (capillaryBridgeVolume, ...Active, ...Rupture,
+       ...ForceContact, ...RadiusSum, ...RadiusProduct): it moves with the atoms,
        survives re-neighboring and goes into restart files with the rest of the
-       contact history.
+       contact history. The constants are derived again in the setup pass of every run
+       (the coefficients may have changed since the bridges formed).
      - parameters come from fix property/global (surfaceTension, contactAngle,
        bridgeVolume), per-particle free liquid from fix property/atom freeLiquid.
      - walls are dry: a fix wall/gran with `cohesion capillary` adds no force.
@@ -174,8 +177,13 @@ namespace ContactModels {
     {
       // walls are dry: no history, no properties, no force
       if (!wall_) {
+        // a cb_bridge, in its field order (none changes sign with the pair's order)
         history_offset_ = hsetup->add_history_value("capillaryBridgeVolume", "0");
         hsetup->add_history_value("capillaryBridgeActive", "0");
+        hsetup->add_history_value("capillaryBridgeRupture", "0");
+        hsetup->add_history_value("capillaryBridgeForceContact", "0");
+        hsetup->add_history_value("capillaryBridgeRadiusSum", "0");
+        hsetup->add_history_value("capillaryBridgeRadiusProduct", "0");
       }
     }
 
@@ -324,8 +332,7 @@ namespace ContactModels {
         error->one(FLERR, "cohesion model capillary: no contact history for a pair (internal)");
       double * const hist = &d.contact_history[history_offset_];
       cb_bridge bridge;
-      bridge.volume = hist[0];
-      bridge.active = hist[1];
+      std::memcpy(&bridge, hist, sizeof bridge);
 
       const int i = d.i, j = d.j;
       const int nlocal = atom->nlocal;
@@ -336,8 +343,11 @@ namespace ContactModels {
       const double ra = swap ? d.radj : d.radi;
       const double rb = swap ? d.radi : d.radj;
       const cb_law *law = law_for(d.itype, d.jtype);
+      if (updating_ && update->setupflag && bridge.active != 0.0)
+        check(cb_bridge_set_volume(law, ra, rb, bridge.volume, &bridge),
+              "bridge constants at setup", d, gap, bridge.volume);
       // the force of the bridge's state after this pass: from cb_bridge_step where the
-      // bridge is advanced (one rupture distance for both), else from cb_force below
+      // bridge is advanced, else from cb_bridge_force below
       double capillary = 0.0;
       bool have_force = false;
 
@@ -392,8 +402,7 @@ namespace ContactModels {
             candidates_.push_back(c);
           }
         }
-        hist[0] = bridge.volume;
-        hist[1] = bridge.active;
+        std::memcpy(hist, &bridge, sizeof bridge);
         if (tally_ && bridge.active != 0.0) tally(i, j_local ? j : -1, bridge.volume);
       }
 
@@ -404,7 +413,7 @@ namespace ContactModels {
       // keeps the pair's history through re-neighboring while the bridge exists
       if (d.contact_flags) *d.contact_flags |= CONTACT_COHESION_MODEL;
       if (!have_force)
-        check(cb_force(law, ra, rb, bridge.volume, gap, &capillary, NULL), "force", d, gap,
+        check(cb_bridge_force(law, ra, rb, gap, &bridge, &capillary), "force", d, gap,
               bridge.volume);
       return capillary;
     }
@@ -429,8 +438,7 @@ namespace ContactModels {
                  c.gap, volume);
         const cb_law *law = law_for(c.itype, c.jtype);
         cb_bridge bridge;
-        bridge.volume = 0.0;
-        bridge.active = 0.0;
+        std::memset(&bridge, 0, sizeof bridge);
         cb_transition change = CB_BRIDGE_STAYS_DRY;
         double released = 0.0, capillary = 0.0;
         check_at(cb_bridge_step(law, c.ra, c.rb, c.gap, volume, &bridge, &change, &released,
@@ -438,8 +446,7 @@ namespace ContactModels {
                  "bridge update", c.i, c.j, c.gap, volume);
         if (change != CB_BRIDGE_FORMED) continue;
         check_reach_at(law, c.ra, c.rb, c.radsum, bridge.volume, c.i, c.j);
-        c.history[0] = bridge.volume;
-        c.history[1] = bridge.active;
+        std::memcpy(c.history, &bridge, sizeof bridge);
         if (c.contact_flags) *c.contact_flags |= CONTACT_COHESION_MODEL;
         const bool j_local = c.j < nlocal;
         if (tally_) tally(c.i, j_local ? c.j : -1, bridge.volume);

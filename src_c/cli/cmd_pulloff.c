@@ -202,7 +202,7 @@ int cmd_pulloff(int argc, char **argv)
     const double x2_start = p.radsum;
     const double dtfm = 0.5 * dt / m1; /* fix nve: dtf = 0.5 dt, dtfm = dtf / mass */
     double x1 = 0.0, v1 = 0.0, x2 = x2_start;
-    cb_bridge bridge = {0.0, 0.0};
+    cb_bridge bridge = {0};
     forces f;
     status = compute_forces(&p, x1, v1, x2, &bridge, &f);
     if (status != CB_OK) {

@@ -5,6 +5,8 @@
 #    'friction dry'; before it slides, k_t times the accumulated displacement;
 #  - the normal dashpot: the restitution of a head-on collision, 'dashpot approach' and
 #    'dashpot both', against the analytic values;
+#  - the bridge's stored constants follow the coefficients (pair_coeff between two runs)
+#    and the radii (a sphere growing under fix adapt): its force against the CLI's;
 #  - the neighbor reach: LAMMPS's neighbor cutoff is r1 + r2 + the rupture distance of
 #    the bridge volume in use (fixed: the pair_coeff volume; a protocol: vmax) + skin.
 . "$(dirname "$0")/lib.sh" "$@"
@@ -41,6 +43,32 @@ for dashpot in both approach; do
     close_rel "collision, dashpot $dashpot: restitution" "$got" "$expected" 2e-3
     echo "collision, dashpot $dashpot: restitution $got, analytic $expected"
 done
+
+# the bridge's constants: gamma 0.0728 -> 0.05 between two runs, then sphere 2 grows to
+# 1.5 times its diameter during a run (each force, in overlap, is the law's value at
+# contact: Richefeu's 2 pi gamma R_g, which both changes move)
+log="$TMP/rederive.log"
+if lmp 1 "$log" -in "$DECKS/in.rederive" -var gamma1 0.0728 -var gamma2 0.05 -var growth 1.5 \
+    >/dev/null 2>&1; then
+    thermo "$log" >"$TMP/rows"
+    n=0
+    for expect in "0.0728 1e-3" "0.05 1e-3" "0.05 1.5e-3"; do
+        n=$((n + 1))
+        set -- $expect
+        want=$("$CB" force richefeu gamma "$1" --r1 1e-3 --r2 "$2" --volume 1e-11 --gap -1e-4 |
+            awk -F, 'NR == 2 { print $2 }')
+        row=$(sed -n "${n}p" "$TMP/rows")
+        [ $n = 3 ] && row=$(tail -n 1 "$TMP/rows")    # run 3: its last step
+        for column in 2 3; do
+            close_rel "bridge constants, run $n (gamma $1, r2 $2), $( [ $column = 2 ] &&
+                echo 'force loop' || echo 'single()')" \
+                "$(echo "$row" | awk -v c=$column '{ print $c }')" "$want" 1e-12
+        done
+        echo "bridge constants, run $n (gamma $1, r2 $2): LAMMPS $(echo "$row" | cut -d' ' -f2-), capbridge force $want"
+    done
+else
+    fail "rederive: LAMMPS failed: $(grep -h -m1 ERROR "$log"*)"
+fi
 
 # the neighbor reach
 reach() {
