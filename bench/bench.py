@@ -72,16 +72,6 @@ def ratio_stats(times, side, reference):
     return statistics.median(ratios), min(ratios), max(ratios)
 
 
-def probe_ratio_stats(times, side, reference):
-    """As ratio_stats, with each run's time divided by its own Modify time first.  The fixes
-    (time integration) do the same work on every side, so their time measures how fast the
-    machine ran during that run: dividing by it takes out the speed drift of the virtual
-    machine between runs (+-15 % here), not the cost of the pair style."""
-    ratios = [(a.seconds / a.modify) / (b.seconds / b.modify)
-              for a, b in zip(times[side], times[reference])]
-    return statistics.median(ratios), min(ratios), max(ratios)
-
-
 def median_us(loops):
     return statistics.median(l.us_per_particle_step() for l in loops)
 
@@ -121,30 +111,23 @@ def part1(ctx):
     times = alternate(sides, ctx.repeats, run_side)
     wet = ratio_stats(times, "wet", "stock")
     off = ratio_stats(times, "off", "stock")
-    wet_probe = probe_ratio_stats(times, "wet", "stock")
-    off_probe = probe_ratio_stats(times, "off", "stock")
     n = times["stock"][0].atoms
     text = header(1, "Wet and dry against LAMMPS's own dry contact", ctx.command)
     text += (f"Scene: bench/in.cycle.lammps, {n} grains (1.0 and 1.2 mm, jammed, periodic), "
              f"2000 steps = one compression cycle of 3 %, 1 rank; {ctx.repeats} repeats, the "
-             "three sides alternating.  Two ratios per repeat: of the loop times, and of the "
-             "loop times each divided by the same run's Modify time (fix nve/sphere, the same "
-             "work on every side: a probe of how fast the machine ran during that run, which "
-             "takes out the speed drift between runs; a pair style that evicts more of the "
-             "atom arrays from the cache would make it read slightly low).\n\n"
+             "three sides alternating; the ratio of the loop times within each repeat, its "
+             "median over the repeats, and its spread (min-max: the machine's speed drifts "
+             "between runs).\n\n"
              "| side | pair style | us per particle-step (median) | time / stock: median (min-max) "
-             "| speed-corrected: median (min-max) | target |\n|---|---|---:|---:|---:|---|\n"
-             f"| stock | gran/hooke/history (dry) | {median_us(times['stock']):.3f} | 1 | 1 | |\n"
+             "| target |\n|---|---|---:|---:|---|\n"
+             f"| stock | gran/hooke/history (dry) | {median_us(times['stock']):.3f} | 1 | |\n"
              f"| off | gran/capillary, volume 0 | {median_us(times['off']):.3f} | "
-             f"**{off[0]:.3f}** ({off[1]:.3f}-{off[2]:.3f}) | "
-             f"**{off_probe[0]:.3f}** ({off_probe[1]:.3f}-{off_probe[2]:.3f}) | <= 1.02 |\n"
+             f"**{off[0]:.3f}** ({off[1]:.3f}-{off[2]:.3f}) | <= 1.02 |\n"
              f"| wet | gran/capillary, law richefeu, 1e-11 m^3 on every contact | "
              f"{median_us(times['wet']):.3f} | **{wet[0]:.3f}** ({wet[1]:.3f}-{wet[2]:.3f}) | "
-             f"**{wet_probe[0]:.3f}** ({wet_probe[1]:.3f}-{wet_probe[2]:.3f}) | "
              "<= 1.10 (aim 1.05) |\n\n")
-    summary = (f"LAMMPS, {n} grains: wet / stock dry **{wet[0]:.2f}** (speed-corrected "
-               f"{wet_probe[0]:.2f}; target 1.10), liquid off / stock dry **{off[0]:.3f}** "
-               f"(speed-corrected {off_probe[0]:.3f}; target 1.02)")
+    summary = (f"LAMMPS, {n} grains: wet / stock dry **{wet[0]:.2f}** (target 1.10), "
+               f"liquid off / stock dry **{off[0]:.3f}** (target 1.02)")
     return text, summary
 
 

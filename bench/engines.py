@@ -31,16 +31,11 @@ def engines(cache):
     return lammps, liggghts
 
 
-MODIFY = re.compile(r"^Modify\s*\|\s*[0-9.eE+-]+\s*\|\s*([0-9.eE+-]+)\s*\|")
-
-
 class Loop:
-    """One timed run: wall seconds of a `run`, steps, atoms, ranks, and the seconds of its
-    Modify section (the fixes: time integration; mean over the ranks)."""
+    """One timed run: wall seconds of a `run`, steps, atoms, ranks."""
 
     def __init__(self, seconds, ranks, steps, atoms):
         self.seconds, self.ranks, self.steps, self.atoms = seconds, ranks, steps, atoms
-        self.modify = None
 
     def us_per_particle_step(self):
         """Wall time per particle and step [us] (not multiplied by the ranks)."""
@@ -56,10 +51,6 @@ def loops(log):
             if m:
                 found.append(Loop(float(m.group(1)), int(m.group(2)), int(m.group(3)),
                                   int(m.group(4))))
-                continue
-            m = MODIFY.match(line)
-            if m and found and found[-1].modify is None:
-                found[-1].modify = float(m.group(1))
     if not found:
         fail(f"{log} has no 'Loop time' line")
     return found
