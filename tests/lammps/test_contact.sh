@@ -4,7 +4,7 @@
 #    with 'friction wet' (Richefeu 2007 eq. 12 as documented), mu f_contact with
 #    'friction dry'; before it slides, k_t times the accumulated displacement;
 #  - the normal dashpot: the restitution of a head-on collision, 'dashpot approach' and
-#    'dashpot both', against the analytic values;
+#    'dashpot both', against the analytic values, and again from a restart file;
 #  - the bridge's stored constants follow the coefficients (pair_coeff between two runs)
 #    and the radii (a sphere growing under fix adapt): its force against the CLI's;
 #  - the neighbor reach: LAMMPS's neighbor cutoff is r1 + r2 + the rupture distance of
@@ -42,6 +42,21 @@ for dashpot in both approach; do
         printf "%.17g", d == "both" ? exp(-pi * a / s) : exp(-a / s * atan2(s, a)) }')
     close_rel "collision, dashpot $dashpot: restitution" "$got" "$expected" 2e-3
     echo "collision, dashpot $dashpot: restitution $got, analytic $expected"
+    # the same collision from a restart file written before it: the dashpot is one of the
+    # pair style's settings stored there (the default, approach, would give the other e)
+    # (lmp sets $log: the two logs are named before)
+    restart="$TMP/collision_$dashpot.restart"
+    write_log="$TMP/collision_${dashpot}_write.log" read_log="$TMP/collision_${dashpot}_read.log"
+    if lmp 1 "$write_log" -in "$DECKS/in.collision" -var dashpot $dashpot -var alpha 0.3 \
+        -var stage write -var restart_file "$restart" >/dev/null 2>&1 &&
+        lmp 1 "$read_log" -in "$DECKS/in.collision" -var stage read \
+            -var restart_file "$restart" >/dev/null 2>&1; then
+        again=$(sed -n 's/^RESTITUTION //p' "$read_log" | head -1)
+        close_rel "collision, dashpot $dashpot, from a restart file: restitution" "$again" "$got" 1e-9
+        echo "collision, dashpot $dashpot, from a restart file: restitution $again"
+    else
+        fail "collision $dashpot, restart: LAMMPS failed: $(grep -h -m1 ERROR "$TMP/collision_${dashpot}_"*)"
+    fi
 done
 
 # the bridge's constants: gamma 0.0728 -> 0.05 between two runs, then sphere 2 grows to
