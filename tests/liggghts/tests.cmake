@@ -38,6 +38,10 @@ add_test(NAME liggghts_easo_comparison
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/easo_comparison.py
                  ${CAPBRIDGE_LIGGGHTS_ENV} --laws soulie,willett --check
                  --workdir ${_liggghts_work}/easo)
+# a bridge's force after the surface tension changes between two runs
+add_test(NAME liggghts_between_runs
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/between_runs.py ${CAPBRIDGE_LIGGGHTS_ENV}
+                 --workdir ${_liggghts_work}/between_runs)
 set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts_bad_input
-                     liggghts_friction liggghts_easo_comparison
+                     liggghts_friction liggghts_easo_comparison liggghts_between_runs
                      PROPERTIES LABELS "liggghts" TIMEOUT 600)
