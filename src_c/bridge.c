@@ -126,12 +126,8 @@ static cb_status force_of(const cb_law *law, double r1, double r2, double gap,
         *force = 0.0;
         return CB_OK;
     }
-    if (gap <= 0.0) {
-        /* cb_pair_force's overlap rule on the stored contact value: Richefeu eq. 10 keeps
-         * it in overlap, Gladkyy eq. 4 applies none in mechanical contact. */
-        *force = gap < 0.0 && law->overlap == CB_OVERLAP_NONE ? 0.0 : bridge->force_contact;
-        return CB_OK;
-    }
+    /* in contact, the stored force (always, for a valid bridge with these constants) */
+    if (cb_bridge_held_in_contact(law, r1, r2, gap, bridge, force)) return CB_OK;
     cb_pair pair = cb_pair_make(law, r1, r2, bridge->volume);
     return cb_pair_force(law, &pair, bridge->rupture, gap, force, NULL);
 }

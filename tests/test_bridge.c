@@ -56,7 +56,9 @@ static int same_bits(double a, double b) { return memcmp(&a, &b, sizeof a) == 0;
 static cb_transition step(const cb_law *law, double r1, double r2, double gap, double available,
                           cb_bridge *bridge, double *released)
 {
-    cb_bridge copy = *bridge;
+    cb_bridge copy = *bridge, before = *bridge;
+    double inline_force = -1.0;
+    const int held_inline = cb_bridge_held_in_contact(law, r1, r2, gap, bridge, &inline_force);
     cb_transition t = (cb_transition)-1, t_step = (cb_transition)-2;
     double released_step = -2.0, force = -1.0;
     CHECK_STATUS(cb_bridge_update(law, r1, r2, gap, available, bridge, &t, released), CB_OK);
@@ -72,6 +74,12 @@ static cb_transition step(const cb_law *law, double r1, double r2, double gap, d
     double bridge_force = -1.0;
     CHECK_STATUS(cb_bridge_force(law, r1, r2, gap, bridge, &bridge_force), CB_OK);
     CHECK(same_bits(bridge_force, expected_force));
+    /* the inline shortcut, where it applies: held, unchanged, the same force */
+    if (held_inline)
+        CHECK(t == CB_BRIDGE_HELD && memcmp(&before, bridge, sizeof before) == 0 &&
+              same_bits(inline_force, expected_force));
+    else
+        CHECK(inline_force == -1.0);
     return t;
 }
 
@@ -453,6 +461,27 @@ static void derived_constants(void)
     CHECK_STATUS(cb_bridge_set_volume(&law, r1, r2, v, &c), CB_ERR_RANGE);
     CHECK(memcmp(&c, &corrupt, sizeof c) == 0);
     CHECK(force == 3.0);
+
+    /* the inline shortcut applies to exactly the bridges in contact with these constants */
+    double quick = -1.0;
+    CHECK(cb_bridge_held_in_contact(&law, r1, r2, -1e-7, &b, &quick) && same_bits(quick, f0));
+    CHECK(cb_bridge_held_in_contact(&law, r2, r1, 0.0, &b, &quick) && same_bits(quick, f0));
+    quick = -1.0;
+    CHECK(!cb_bridge_held_in_contact(&law, r1, r2, 1e-9, &b, &quick));
+    CHECK(!cb_bridge_held_in_contact(&law, r1, r2, NAN, &b, &quick));
+    CHECK(!cb_bridge_held_in_contact(&law, r1, 1.01 * r2, -1e-7, &b, &quick));
+    CHECK(!cb_bridge_held_in_contact(&law, r1, r2, -1e-7, &dry, &quick));
+    const double broken[] = {NAN, -1.0, HUGE_VAL};
+    for (int k = 0; k < 3; ++k) {
+        cb_bridge bad_force = b, bad_volume = b, bad_flag = b;
+        bad_force.force_contact = broken[k];
+        bad_volume.volume = broken[k];
+        bad_flag.active = k == 0 ? NAN : 0.5;
+        CHECK(!cb_bridge_held_in_contact(&law, r1, r2, -1e-7, &bad_force, &quick));
+        CHECK(!cb_bridge_held_in_contact(&law, r1, r2, -1e-7, &bad_volume, &quick));
+        CHECK(!cb_bridge_held_in_contact(&law, r1, r2, -1e-7, &bad_flag, &quick));
+    }
+    CHECK(quick == -1.0);
 
     /* Gladkyy eq. 4 (overlap none): the stored contact force applies at gap 0 only */
     cb_law no_overlap = law;

@@ -343,15 +343,21 @@ namespace ContactModels {
       const double ra = swap ? d.radj : d.radi;
       const double rb = swap ? d.radi : d.radj;
       const cb_law *law = law_for(d.itype, d.jtype);
-      if (updating_ && update->setupflag && bridge.active != 0.0)
+      if (updating_ && update->setupflag && bridge.active != 0.0) {
         check(cb_bridge_set_volume(law, ra, rb, bridge.volume, &bridge),
               "bridge constants at setup", d, gap, bridge.volume);
+        std::memcpy(hist, &bridge, sizeof bridge);
+      }
       // the force of the bridge's state after this pass: from cb_bridge_step where the
       // bridge is advanced, else from cb_bridge_force below
       double capillary = 0.0;
       bool have_force = false;
 
-      if (updating_ && (bridge.active != 0.0 || gap <= 0.0)) {
+      if (updating_ && cb_bridge_held_in_contact(law, ra, rb, gap, &bridge, &capillary)) {
+        // the common case, a bridge held in contact: its stored force, inline
+        have_force = true;
+        if (tally_) tally(i, j_local ? j : -1, bridge.volume);
+      } else if (updating_ && (bridge.active != 0.0 || gap <= 0.0)) {
         // (a dry pair that does not touch stays dry: nothing to do)
         if (!protocol2_) {
           const double available = bridge_volume_[d.itype][d.jtype];
