@@ -15,8 +15,9 @@
  *
  * A bridge keeps with its volume its rupture distance and its force at contact (derive
  * below), so that the engines' per-step call, cb_bridge_step, evaluates the force law only
- * for a stretched bridge, and the rupture rule (a cube root) never.  In a dense packing
- * most bridges are in contact: this took a third off the pair time of the benchmark scene.
+ * for a stretched bridge, and the rupture rule (a cube root) only when the constants are
+ * derived.  In a dense packing most bridges are in contact: this took a third off the pair
+ * time of the benchmark scene.
  *
  * Every state is validated before anything is changed, and all outputs are written
  * together at the end: on any error the bridge, the transition, the released volume and

@@ -244,10 +244,11 @@ cb_status cb_bridge_force(const cb_law *law, double r1, double r2, double gap,
 
 /* For an engine's pair loop, inline: a bridge in contact (gap <= 0) whose constants are for
  * these radii is held, and its force is the stored one (cb_pair_force's overlap rule) —
- * what cb_bridge_step would do, without the call: the common case of a dense packing, a
- * tenth of the benchmark scene's time.  Returns 1 and sets *force then; returns 0, touching
- * nothing, where cb_bridge_step must be called: no bridge, a gap > 0 (or NaN), other radii,
- * or a stored state that is not an active bridge's (cb_bridge_step reports it). */
+ * what cb_bridge_step would do, without the call: the common case of a dense packing,
+ * where the call cost ~10 % of the benchmark scene's loop time.  Returns 1 and sets *force
+ * then; returns 0, touching nothing, where cb_bridge_step must be called: no bridge, a
+ * gap > 0 (or NaN), other radii, or a stored state that is not an active bridge's
+ * (cb_bridge_step reports it). */
 static inline int cb_bridge_held_in_contact(const cb_law *law, double r1, double r2,
                                             double gap, const cb_bridge *bridge, double *force)
 {
