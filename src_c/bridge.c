@@ -25,6 +25,7 @@
  */
 #include "laws.h"
 
+#include <float.h>
 #include <math.h>
 
 static const cb_bridge dry_bridge = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
@@ -35,21 +36,17 @@ static const cb_bridge dry_bridge = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
  * repairing it would create or lose liquid. */
 static cb_status check_state(const cb_bridge *b)
 {
-    if (!isfinite(b->volume) || !isfinite(b->active) || !isfinite(b->rupture) ||
-        !isfinite(b->force_contact) || !isfinite(b->radius_sum) || !isfinite(b->radius_product))
-        return CB_ERR_NOT_FINITE;
-    if (b->volume < 0.0) return CB_ERR_NEGATIVE;
+    int valid;
     if (b->active == 1.0)
-        return b->volume > 0.0 && b->rupture > 0.0 && b->force_contact >= 0.0 &&
-                       b->radius_sum > 0.0 && b->radius_product > 0.0
-                   ? CB_OK
-                   : CB_ERR_NEGATIVE;
-    if (b->active == 0.0)
-        return b->volume == 0.0 && b->rupture == 0.0 && b->force_contact == 0.0 &&
-                       b->radius_sum == 0.0 && b->radius_product == 0.0
-                   ? CB_OK
-                   : CB_ERR_RANGE;
-    return CB_ERR_RANGE;
+        valid = b->volume > 0.0 && b->volume <= DBL_MAX && b->rupture > 0.0 &&
+                b->rupture <= DBL_MAX && b->force_contact >= 0.0 &&
+                b->force_contact <= DBL_MAX && b->radius_sum > 0.0 &&
+                b->radius_sum <= DBL_MAX && b->radius_product > 0.0 &&
+                b->radius_product <= DBL_MAX;
+    else
+        valid = b->active == 0.0 && b->volume == 0.0 && b->rupture == 0.0 &&
+                b->force_contact == 0.0 && b->radius_sum == 0.0 && b->radius_product == 0.0;
+    return valid ? CB_OK : CB_ERR_BRIDGE_STATE;
 }
 
 static cb_status check_inputs(const cb_law *law, double r1, double r2, double gap,

@@ -41,7 +41,8 @@ typedef enum cb_status {
     CB_ERR_NO_BRIDGE,        /* no bridge of this volume exists at this gap for this law */
     CB_ERR_NO_CONVERGENCE,   /* the exact solver did not converge */
     CB_ERR_NO_MEMORY,        /* an allocation failed (never in the force path) */
-    CB_ERR_LIQUID            /* liquid bookkeeping would lose or create liquid */
+    CB_ERR_LIQUID,           /* liquid bookkeeping would lose or create liquid */
+    CB_ERR_BRIDGE_STATE      /* a stored cb_bridge is neither dry nor a valid active bridge */
 } cb_status;
 
 /* A short English sentence for a status; never NULL. */

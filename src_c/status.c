@@ -16,6 +16,9 @@ const char *cb_status_message(cb_status status)
     case CB_ERR_NO_CONVERGENCE: return "the exact Laplace-Young solver did not converge";
     case CB_ERR_NO_MEMORY: return "out of memory";
     case CB_ERR_LIQUID: return "liquid bookkeeping would lose or create liquid";
+    case CB_ERR_BRIDGE_STATE:
+        return "the stored bridge state is not a valid bridge (a corrupted pair history, or "
+               "one written by another build, e.g. in a restart file)";
     }
     return "unknown status";
 }

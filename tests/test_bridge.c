@@ -272,7 +272,7 @@ static void errors(const cb_law *law)
         for (int k = 0; k < CB_BRIDGE_DOUBLES; ++k) {
             cb_bridge corrupt = wet;
             ((double *)&corrupt)[k] = bad[i];
-            expect_error(law, r, r, 1e-6, v, corrupt, CB_ERR_NOT_FINITE);
+            expect_error(law, r, r, 1e-6, v, corrupt, CB_ERR_BRIDGE_STATE);
         }
     }
     expect_error(law, 0.0, r, 0.0, v, dry, CB_ERR_NEGATIVE);
@@ -289,12 +289,12 @@ static void errors(const cb_law *law)
     half.active = 0.5;
     two.active = 2.0;
     negative_dry.volume = -v;
-    expect_error(law, r, r, 1e-6, v, negative, CB_ERR_NEGATIVE);
-    expect_error(law, r, r, 1e-6, v, empty_active, CB_ERR_NEGATIVE);
-    expect_error(law, r, r, -1e-6, v, liquid_inactive, CB_ERR_RANGE);
-    expect_error(law, r, r, 1e-6, v, half, CB_ERR_RANGE);
-    expect_error(law, r, r, 1e-6, v, two, CB_ERR_RANGE);
-    expect_error(law, r, r, 1e-6, v, negative_dry, CB_ERR_NEGATIVE);
+    expect_error(law, r, r, 1e-6, v, negative, CB_ERR_BRIDGE_STATE);
+    expect_error(law, r, r, 1e-6, v, empty_active, CB_ERR_BRIDGE_STATE);
+    expect_error(law, r, r, -1e-6, v, liquid_inactive, CB_ERR_BRIDGE_STATE);
+    expect_error(law, r, r, 1e-6, v, half, CB_ERR_BRIDGE_STATE);
+    expect_error(law, r, r, 1e-6, v, two, CB_ERR_BRIDGE_STATE);
+    expect_error(law, r, r, 1e-6, v, negative_dry, CB_ERR_BRIDGE_STATE);
     /* an active bridge without its constants, and a dry one with some */
     for (int k = 2; k < CB_BRIDGE_DOUBLES; ++k) {
         cb_bridge zero_constant = wet, negative_constant = wet, dry_constant = dry;
@@ -302,9 +302,9 @@ static void errors(const cb_law *law)
         ((double *)&negative_constant)[k] = -1.0;
         ((double *)&dry_constant)[k] = 1.0;
         /* (the contact force may be 0: a law with none at contact) */
-        if (k != 3) expect_error(law, r, r, -1e-6, v, zero_constant, CB_ERR_NEGATIVE);
-        expect_error(law, r, r, -1e-6, v, negative_constant, CB_ERR_NEGATIVE);
-        expect_error(law, r, r, -1e-6, v, dry_constant, CB_ERR_RANGE);
+        if (k != 3) expect_error(law, r, r, -1e-6, v, zero_constant, CB_ERR_BRIDGE_STATE);
+        expect_error(law, r, r, -1e-6, v, negative_constant, CB_ERR_BRIDGE_STATE);
+        expect_error(law, r, r, -1e-6, v, dry_constant, CB_ERR_BRIDGE_STATE);
     }
 
     /* -0.0 is a dry volume and a contact gap. */
@@ -458,7 +458,7 @@ static void derived_constants(void)
     cb_bridge corrupt = b;
     corrupt.active = 0.5;
     c = corrupt;
-    CHECK_STATUS(cb_bridge_set_volume(&law, r1, r2, v, &c), CB_ERR_RANGE);
+    CHECK_STATUS(cb_bridge_set_volume(&law, r1, r2, v, &c), CB_ERR_BRIDGE_STATE);
     CHECK(memcmp(&c, &corrupt, sizeof c) == 0);
     CHECK(force == 3.0);
 

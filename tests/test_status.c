@@ -10,7 +10,7 @@ int main(int argc, char **argv)
     const cb_status all[] = {CB_OK, CB_ERR_NULL, CB_ERR_NOT_FINITE, CB_ERR_NEGATIVE,
                              CB_ERR_RANGE, CB_ERR_UNKNOWN_LAW, CB_ERR_UNKNOWN_KEYWORD,
                              CB_ERR_OUT_OF_VALIDITY, CB_ERR_NO_BRIDGE, CB_ERR_NO_CONVERGENCE,
-                             CB_ERR_NO_MEMORY, CB_ERR_LIQUID};
+                             CB_ERR_NO_MEMORY, CB_ERR_LIQUID, CB_ERR_BRIDGE_STATE};
     const size_t n = sizeof all / sizeof all[0];
     CHECK(strcmp(cb_status_message(CB_OK), "ok") == 0);
     for (size_t i = 0; i < n; ++i) {

@@ -746,15 +746,8 @@ void PairGranCapillary::derive_bridges()
       const int j = jlist[jj] & NEIGHMASK;
       const int status = cb_bridge_set_volume(law(type[i], type[j]), radius[i], radius[j],
                                               bridge->volume, bridge);
-      // with positive radii, a refusal other than the law's own is the stored state, e.g.
-      // a restart file written by a build whose pair history was laid out otherwise
-      // (before the bridge kept its constants: 5 values per pair, now 9)
-      if (status != CB_OK && status != CB_ERR_OUT_OF_VALIDITY && status != CB_ERR_NO_BRIDGE &&
-          radius[i] > 0.0 && radius[j] > 0.0)
-        error->one(FLERR, "pair gran/capillary: the pair history of atoms {} and {} does not "
-                   "hold a valid bridge state: was the restart file written by another build "
-                   "of gran/capillary? Its pair history cannot be read by this one",
-                   atom->tag[i], atom->tag[j]);
+      // (a restart file of a build whose history was laid out otherwise, 5 values a pair
+      // before the bridge kept its constants: CB_ERR_BRIDGE_STATE, which says so)
       check_cb(status, "bridge constants at setup", type[i], type[j], radius[i], radius[j],
                bridge->volume, 0.0);
     }

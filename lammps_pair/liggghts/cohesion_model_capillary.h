@@ -344,21 +344,10 @@ namespace ContactModels {
       const double rb = swap ? d.radi : d.radj;
       const cb_law *law = law_for(d.itype, d.jtype);
       if (updating_ && update->setupflag && bridge.active != 0.0) {
-        const cb_status status = cb_bridge_set_volume(law, ra, rb, bridge.volume, &bridge);
-        // with positive radii, a refusal other than the law's own is the stored state, e.g.
-        // a restart file written by a build whose contact history was laid out otherwise
-        // (before the bridge kept its constants: 2 values per pair, now 6)
-        if (status != CB_OK && status != CB_ERR_OUT_OF_VALIDITY && status != CB_ERR_NO_BRIDGE &&
-            ra > 0.0 && rb > 0.0) {
-          char text[320];
-          snprintf(text, sizeof text,
-                   "cohesion model capillary: the contact history of particles %d and %d does "
-                   "not hold a valid bridge state: was the restart file written by another "
-                   "build of this model? Its contact history cannot be read by this one",
-                   atom->tag[d.i], atom->tag[d.j]);
-          error->one(FLERR, text);
-        }
-        check(status, "bridge constants at setup", d, gap, bridge.volume);
+        // (a restart file of a build whose history was laid out otherwise, 2 values a pair
+        // before the bridge kept its constants: CB_ERR_BRIDGE_STATE, which says so)
+        check(cb_bridge_set_volume(law, ra, rb, bridge.volume, &bridge),
+              "bridge constants at setup", d, gap, bridge.volume);
         std::memcpy(hist, &bridge, sizeof bridge);
       }
       // the force of the bridge's state after this pass: from cb_bridge_step where the
