@@ -22,37 +22,13 @@ import liggghts_common as lc  # noqa: E402
 
 KN, R, OVERLAP = 1000.0, 1e-3, 1e-5
 GAMMAS = (0.0728, 0.05)
-DECK = """units           si
-atom_style      granular
-atom_modify     map array
-boundary        f f f
-newton          off
-communicate     single vel yes
-region          box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box
-create_box      1 box
-neighbor        5e-4 bin
-neigh_modify    delay 0
-fix m1 all property/global kn peratomtypepair 1 {kn}
-fix m2 all property/global kt peratomtypepair 1 1e4
-fix m3 all property/global gamman peratomtypepair 1 0
-fix m4 all property/global gammat peratomtypepair 1 0
-fix m5 all property/global coefficientFriction peratomtypepair 1 0.5
-fix m6 all property/global surfaceTension scalar {gamma1}
-fix m7 all property/global contactAngle peratomtype 0
-fix m8 all property/global bridgeVolume peratomtypepair 1 1e-11
-pair_style      gran model hooke/stiffness tangential history cohesion capillary law richefeu
-pair_coeff      * *
-timestep        1e-6
-create_atoms    1 single 0 0 0 units box
-create_atoms    1 single {x2!r} 0 0 units box
-set             atom * diameter {d!r} density 2500
-variable        x1 equal x[1]
+DECK_RUNS = """variable        x1 equal x[1]
 variable        x2 equal x[2]
 variable        fx1 equal fx[1]
 thermo_style    custom step v_x1 v_x2 v_fx1
 thermo_modify   format float %.17g
 run             0
-fix m6 all property/global surfaceTension scalar {gamma2}
+fix m6 all property/global surfaceTension scalar {gamma2!r}
 run             0
 """
 
@@ -68,8 +44,8 @@ def main():
     os.makedirs(workdir, exist_ok=True)
     deck = os.path.join(workdir, "in.between_runs")
     with open(deck, "w") as f:
-        f.write(DECK.format(kn=KN, gamma1=GAMMAS[0], gamma2=GAMMAS[1], x2=2 * R - OVERLAP,
-                            d=2 * R))
+        f.write(lc.two_spheres_deck(KN, 0.5, GAMMAS[0], "law richefeu", 2 * R - OVERLAP, 2 * R) +
+                DECK_RUNS.format(gamma2=GAMMAS[1]))
     code, log = lc.liggghts(env, deck, [], workdir, log="log.between_runs")
     rows = lc.thermo_rows(log)
     if code != 0 or len(rows) != 2:

@@ -20,32 +20,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import liggghts_common as lc  # noqa: E402
 
 KN, MU, R = 1000.0, 0.5, 1e-3
-DECK = """units           si
-atom_style      granular
-atom_modify     map array
-boundary        f f f
-newton          off
-communicate     single vel yes
-region          box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box
-create_box      1 box
-neighbor        5e-4 bin
-neigh_modify    delay 0
-fix m1 all property/global kn peratomtypepair 1 {kn}
-fix m2 all property/global kt peratomtypepair 1 1e4
-fix m3 all property/global gamman peratomtypepair 1 0
-fix m4 all property/global gammat peratomtypepair 1 0
-fix m5 all property/global coefficientFriction peratomtypepair 1 {mu}
-fix m6 all property/global surfaceTension scalar 0.0728
-fix m7 all property/global contactAngle peratomtype 0
-fix m8 all property/global bridgeVolume peratomtypepair 1 1e-11
-pair_style      gran model hooke/stiffness tangential history cohesion capillary &
-                law richefeu capillary_friction {switch}
-pair_coeff      * *
-timestep        1e-6
-create_atoms    1 single 0 0 0 units box
-create_atoms    1 single 1.99e-3 0 0 units box
-set             atom * diameter 2e-3 density 2500
-group           sphere2 id 2
+DECK_RUN = """group           sphere2 id 2
 fix             slide sphere2 move linear 0 0.01 0
 variable        x1 equal x[1]
 variable        y1 equal y[1]
@@ -63,7 +38,8 @@ run             200
 def measure(env, switch, workdir):
     deck = os.path.join(workdir, "in.friction_" + switch)
     with open(deck, "w") as f:
-        f.write(DECK.format(kn=KN, mu=MU, switch=switch))
+        f.write(lc.two_spheres_deck(KN, MU, 0.0728, "law richefeu capillary_friction " + switch,
+                                    1.99e-3, 2 * R) + DECK_RUN)
     code, log = lc.liggghts(env, deck, [], workdir, log="log.friction_" + switch)
     rows = lc.thermo_rows(log)
     if code != 0 or len(rows) != 2:

@@ -75,6 +75,38 @@ def check_models_current(env):
                                             digest.hexdigest()[:16]))
 
 
+def two_spheres_deck(kn, mu, gamma, cohesion, x2, diameter):
+    """The start of a LIGGGHTS deck: two spheres of `diameter` at x = 0 and x = x2 (both on
+    the x axis, a 2 cm box), a linear spring k_n (hooke/stiffness, no damping, k_t 1e4 N/m,
+    friction mu), surface tension gamma, theta 0, bridge volume 1e-11 m^3, and
+    `cohesion capillary COHESION` (the model's keywords). The test appends its run."""
+    return """units           si
+atom_style      granular
+atom_modify     map array
+boundary        f f f
+newton          off
+communicate     single vel yes
+region          box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box
+create_box      1 box
+neighbor        5e-4 bin
+neigh_modify    delay 0
+fix m1 all property/global kn peratomtypepair 1 {kn!r}
+fix m2 all property/global kt peratomtypepair 1 1e4
+fix m3 all property/global gamman peratomtypepair 1 0
+fix m4 all property/global gammat peratomtypepair 1 0
+fix m5 all property/global coefficientFriction peratomtypepair 1 {mu!r}
+fix m6 all property/global surfaceTension scalar {gamma!r}
+fix m7 all property/global contactAngle peratomtype 0
+fix m8 all property/global bridgeVolume peratomtypepair 1 1e-11
+pair_style      gran model hooke/stiffness tangential history cohesion capillary {cohesion}
+pair_coeff      * *
+timestep        1e-6
+create_atoms    1 single 0 0 0 units box
+create_atoms    1 single {x2!r} 0 0 units box
+set             atom * diameter {diameter!r} density 2500
+""".format(kn=kn, mu=mu, gamma=gamma, cohesion=cohesion, x2=x2, diameter=diameter)
+
+
 def gladkyy_cases():
     """The 13 configurations of Gladkyy & Schwarze 2014, Table 1, with their exact curves:
     {name: {r1, r2, gamma, theta, volume, rupture, gaps[], forces[]}} in file order."""
