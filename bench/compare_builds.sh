@@ -1,10 +1,11 @@
 #!/bin/sh
 # Two builds of the LAMMPS plugin against each other on the wet side of the benchmark scene
-# (bench/in.cycle.lammps, 16 000 grains, 2000 steps), run at the same time, one on each of
-# the two cores: the machine's drift falls on both, which alternating runs do not achieve on
-# a noisy virtual machine.  Prints, per repeat, B's pair and loop time over A's.  Run A
-# against A first: the spread and bias of that control (here 1.02-1.06) bound what a
-# comparison can resolve.  A developer's tool for a change to the hot path; not a test.
+# (bench/in.cycle.lammps, 16 000 grains, 2000 steps), measured as part 1 of bench/run.sh
+# measures: both runs at the same time, pinned to one core, each holding it until both timed
+# runs are done (the deck's me/partner), and their CPU times compared; the launch order
+# alternates.  Prints, per repeat, B's CPU time over A's.  Run A against A first: its spread
+# bounds what a comparison can resolve.  A developer's tool for a change to the hot path;
+# not a test.
 # Usage: bench/compare_builds.sh A.so B.so [REPEATS, default 4]
 # (copy build/lammps_pair/lammps/capbridgeplugin.so aside before rebuilding for B)
 set -eu
@@ -18,15 +19,24 @@ mkdir -p "$work"
 cd "$work"
 [ -f base.data ] || "$LAMMPS_BINARY" -in "$top/bench/in.cycle.lammps" -var stage prep \
     -var data base.data -log none -screen none
+# side PLUGIN NAME PARTNER: one run on core 0, its log NAME.log
 side() {
-    "$LAMMPS_BINARY" -in "$top/bench/in.cycle.lammps" -var data base.data -var side wet \
-        -var plugin "$1" -var nx 2 -var ny 2 -var nz 2 -var steps 2000 -log "$2" -screen none
+    taskset -c 0 "$LAMMPS_BINARY" -in "$top/bench/in.cycle.lammps" -var data base.data \
+        -var side wet -var plugin "$1" -var nx 2 -var ny 2 -var nz 2 -var steps 2000 \
+        -var me "$2" -var partner "$3" -log "$2.log" -screen none
 }
-pair_and_loop() {
-    awk '/^Pair / { p = $3 } /^Loop time/ { l = $4 } END { print p, l }' "$1"
+# the first run's CPU time: its loop time times its CPU use
+cpu_seconds() {
+    awk '/^Loop time/ && !l { l = $4 } /% CPU use/ && !c { c = $1 + 0 }
+         END { print l * c / 100 }' "$1"
 }
 for r in $(seq 1 "$repeats"); do
-    side "$a" log.A & side "$b" log.B & wait
-    echo "$(pair_and_loop log.A) $(pair_and_loop log.B)" |
-        awk -v r="$r" '{ printf "repeat %d: B/A pair %.3f, loop %.3f\n", r, $3 / $1, $4 / $2 }'
+    rm -f A.done B.done
+    if [ $((r % 2)) = 1 ]; then
+        side "$a" A B & side "$b" B A & wait
+    else
+        side "$b" B A & side "$a" A B & wait
+    fi
+    echo "$(cpu_seconds A.log) $(cpu_seconds B.log)" |
+        awk -v r="$r" '{ printf "repeat %d: B/A CPU time %.3f (%.2f s / %.2f s)\n", r, $2 / $1, $2, $1 }'
 done

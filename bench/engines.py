@@ -6,6 +6,7 @@ import subprocess
 import sys
 
 LOOP = re.compile(r"^Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms")
+CPU_USE = re.compile(r"([0-9.]+)% CPU use")
 
 
 def fail(msg):
@@ -32,14 +33,22 @@ def engines(cache):
 
 
 class Loop:
-    """One timed run: wall seconds of a `run`, steps, atoms, ranks."""
+    """One timed run: wall seconds of a `run`, steps, atoms, ranks, and the share of the wall
+    time the process had a CPU (LAMMPS's "CPU use"; None where the log has none)."""
 
     def __init__(self, seconds, ranks, steps, atoms):
         self.seconds, self.ranks, self.steps, self.atoms = seconds, ranks, steps, atoms
+        self.cpu_use = None
 
     def us_per_particle_step(self):
         """Wall time per particle and step [us] (not multiplied by the ranks)."""
         return 1e6 * self.seconds / (self.steps * self.atoms)
+
+    def cpu_seconds(self):
+        """CPU time of the run (one rank): its wall time times its CPU use."""
+        if self.cpu_use is None:
+            fail("a run's log has no 'CPU use' line")
+        return self.seconds * self.cpu_use
 
 
 def loops(log):
@@ -51,29 +60,49 @@ def loops(log):
             if m:
                 found.append(Loop(float(m.group(1)), int(m.group(2)), int(m.group(3)),
                                   int(m.group(4))))
+            m = CPU_USE.search(line)
+            if m and found and found[-1].cpu_use is None:
+                found[-1].cpu_use = float(m.group(1)) / 100.0
     if not found:
         fail(f"{log} has no 'Loop time' line")
     return found
 
 
-def run(engine, ranks, deck, workdir, log, variables):
-    """Runs one deck under mpirun -np ranks in workdir with -var NAME VALUE...; engine is
-    (mpirun command, engine command as a list); returns the log's path. Stops the benchmark,
-    showing the log's tail, if the engine fails."""
+def start(engine, ranks, deck, workdir, log, variables, core=None):
+    """Starts one deck under mpirun -np ranks in workdir with -var NAME VALUE...; engine is
+    (mpirun command, engine command as a list).  With core, one rank pinned to that core
+    (the engine started without mpirun, under taskset).  Returns (process, command, log
+    path) for finish()."""
     mpirun, command = engine
     os.makedirs(workdir, exist_ok=True)
-    cmd = mpirun.split() + ["-np", str(ranks)] + command + ["-in", deck, "-log", log,
-                                                           "-screen", "none"]
+    if core is None:
+        launcher = mpirun.split() + ["-np", str(ranks)]
+    elif ranks == 1:
+        launcher = ["taskset", "-c", str(core)]
+    else:
+        fail("a run pinned to one core has one rank")
+    cmd = launcher + command + ["-in", deck, "-log", log, "-screen", "none"]
     for name, value in variables.items():
         cmd += ["-var", name, str(value)]
-    done = subprocess.run(cmd, cwd=workdir, stdout=subprocess.PIPE,
-                          stderr=subprocess.STDOUT, text=True)
-    path = os.path.join(workdir, log)
-    if done.returncode != 0:
+    process = subprocess.Popen(cmd, cwd=workdir, stdout=subprocess.PIPE,
+                               stderr=subprocess.STDOUT, text=True)
+    return process, cmd, os.path.join(workdir, log)
+
+
+def finish(started):
+    """Waits for a run of start(); returns its log's path.  Stops the benchmark, showing the
+    log's tail, if the engine failed."""
+    process, cmd, path = started
+    output = process.communicate()[0]
+    if process.returncode != 0:
         tail = ""
         if os.path.isfile(path):
             with open(path) as f:
                 tail = "".join(f.readlines()[-15:])
-        fail(f"{' '.join(cmd)} (in {workdir}) failed with {done.returncode}:\n{done.stdout[-2000:]}"
-             f"\n{tail}")
+        fail(f"{' '.join(cmd)} failed with {process.returncode}:\n{output[-2000:]}\n{tail}")
     return path
+
+
+def run(engine, ranks, deck, workdir, log, variables):
+    """One deck, start() to finish(): returns the log's path."""
+    return finish(start(engine, ranks, deck, workdir, log, variables))
