@@ -147,6 +147,7 @@ PairGranCapillary::PairGranCapillary(LAMMPS *lmp) : Pair(lmp)
   fix_liquid = nullptr;
   liquid_mode = LIQUID_FIXED;
   liquid_groupbit = 0;
+  bridges_possible = 1;
 
   nmax_scratch = 0;
   candidates = released = offer = deposit = best_height = nullptr;
@@ -479,7 +480,7 @@ void PairGranCapillary::init_style()
   // the largest rupture distance. Without (no type pair can hold a bridge): the per-pair
   // size list of LAMMPS's dry granular styles, cut at R_i + R_j + skin, so that a dry scene
   // pays for its contacts only.
-  int bridges_possible = 0;
+  bridges_possible = 0;
   for (int i = 1; i <= n; i++)
     for (int j = i; j <= n; j++)
       if (setflag[i][j] &&
@@ -744,6 +745,14 @@ void PairGranCapillary::derive_bridges()
       cb_bridge *bridge = bridge_of(&firstvalue[i][SIZE_HISTORY * jj]);
       if (bridge->active == 0.0) continue;
       const int j = jlist[jj] & NEIGHMASK;
+      // Every volume set to 0 since the bridge formed: the size neighbor list of a scene
+      // without bridges would drop it, and its liquid, at the next re-neighboring.  (Bridges
+      // beyond contact + skin have left the list already; those in contact are found here.)
+      if (!bridges_possible)
+        error->one(FLERR, "pair gran/capillary: atoms {} and {} hold a bridge of {} m^3, but "
+                   "no type pair can hold one in this run (every volume is 0): its liquid "
+                   "would be lost; keep the volume of the wet type pairs > 0",
+                   atom->tag[i], atom->tag[j], bridge->volume);
       const int status = cb_bridge_set_volume(law(type[i], type[j]), radius[i], radius[j],
                                               bridge->volume, bridge);
       // (a restart file of a build whose history was laid out otherwise, 5 values a pair

@@ -141,6 +141,7 @@ class PairGranCapillary : public Pair {
   class FixNeighHistory *fix_history;
   FixCapillaryLiquid *fix_liquid;
   int liquid_mode, liquid_groupbit;
+  int bridges_possible;    // 0: no type pair can hold a bridge in this run (init_style)
 
   // per-atom scratch of one force evaluation (owned + ghost), Protocols 2 and 3
   int nmax_scratch;
