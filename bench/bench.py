@@ -135,6 +135,13 @@ def part1(ctx):
                   f"(CPU {measured.cpu_seconds():.2f} s / {stock.cpu_seconds():.2f} s)",
                   flush=True)
     n = stock.atoms
+    # the interactions each side computes, counted in a run of its own (untimed)
+    census_log = engines.run(ctx.lammps, 1, deck, work, "census.log",
+                             dict(sides["wet"], data=data, nx=copies[0], ny=copies[1],
+                                  nz=copies[2], steps=2000, census="yes"))
+    with open(census_log) as f:
+        words = [line.split() for line in f if line.startswith("CENSUS")][-1]
+    contacts, bridges = float(words[2]), float(words[4])
 
     def cell(name):
         values = ratios[name]
@@ -151,6 +158,10 @@ def part1(ctx):
              "and min-max.  The first row, stock beside stock, is the method's control.  The "
              "times per particle-step are CPU times while sharing the core with the stock "
              "run (the two share its caches).\n\n"
+             f"Census of the wet side, averaged over the cycle (a run of its own, untimed): "
+             f"{contacts:.2f} contacts and {bridges:.2f} bridges per grain (pairs / grains), so "
+             f"{bridges - contacts:.2f} stretched bridges per grain beside the contacts, which "
+             "every side computes.\n\n"
              "| side | pair style | CPU us per particle-step, sharing (median) | "
              "time / stock: median (min-max) | target |\n|---|---|---:|---:|---|\n"
              f"| stock | gran/hooke/history (dry), beside itself | {us('stock')} | "
