@@ -120,7 +120,7 @@ def part1(ctx):
                              steps=2000, me=label, partner=partner)
             started[label] = engines.start(ctx.lammps, 1, deck, work, f"{name}.{label}.{r}.log",
                                            variables, core=0)
-        logs = {label: engines.finish(run) for label, run in started.items()}
+        logs = dict(zip(started, engines.finish_together(list(started.values()))))
         return engines.loops(logs["reference"])[0], engines.loops(logs["measured"])[0]
 
     ratios = {name: [] for name in sides}

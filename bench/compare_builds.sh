@@ -19,9 +19,10 @@ mkdir -p "$work"
 cd "$work"
 [ -f base.data ] || "$LAMMPS_BINARY" -in "$top/bench/in.cycle.lammps" -var stage prep \
     -var data base.data -log none -screen none
-# side PLUGIN NAME PARTNER: one run on core 0, its log NAME.log
+# side PLUGIN NAME PARTNER: one run on core 0, its log NAME.log (run in the background, the
+# subshell becomes the engine: its PID is the one to stop)
 side() {
-    taskset -c 0 "$LAMMPS_BINARY" -in "$top/bench/in.cycle.lammps" -var data base.data \
+    exec taskset -c 0 "$LAMMPS_BINARY" -in "$top/bench/in.cycle.lammps" -var data base.data \
         -var side wet -var plugin "$1" -var nx 2 -var ny 2 -var nz 2 -var steps 2000 \
         -var me "$2" -var partner "$3" -log "$2.log" -screen none
 }
@@ -33,10 +34,24 @@ cpu_seconds() {
 for r in $(seq 1 "$repeats"); do
     rm -f A.done B.done
     if [ $((r % 2)) = 1 ]; then
-        side "$a" A B & side "$b" B A & wait
+        side "$a" A B & pa=$!; side "$b" B A & pb=$!
     else
-        side "$b" B A & side "$a" A B & wait
+        side "$b" B A & pb=$!; side "$a" A B & pa=$!
     fi
+    # a run that fails never marks itself done: when the first of the two ends, a failure
+    # stops its partner (the deck's own limit, 10 x the steps, is the backstop)
+    while kill -0 "$pa" 2>/dev/null && kill -0 "$pb" 2>/dev/null; do sleep 1; done
+    for build in A B; do
+        if [ "$build" = A ]; then pid=$pa partner=$pb; else pid=$pb partner=$pa; fi
+        kill -0 "$pid" 2>/dev/null && continue
+        if ! wait "$pid"; then
+            kill "$partner" 2>/dev/null
+            echo "$0: the run of build $build failed, see $work/$build.log" >&2
+            exit 1
+        fi
+    done
+    wait "$pa" && wait "$pb" || { echo "$0: a run failed, see $work/A.log, B.log" >&2; exit 1; }
     echo "$(cpu_seconds A.log) $(cpu_seconds B.log)" |
-        awk -v r="$r" '{ printf "repeat %d: B/A CPU time %.3f (%.2f s / %.2f s)\n", r, $2 / $1, $2, $1 }'
+        awk -v r="$r" '{ printf "repeat %d: B/A CPU time %.3f (%.2f s / %.2f s)\n",
+                                r, $2 / $1, $2, $1 }'
 done

@@ -4,6 +4,7 @@ import os
 import re
 import subprocess
 import sys
+import time
 
 LOOP = re.compile(r"^Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms")
 CPU_USE = re.compile(r"([0-9.]+)% CPU use")
@@ -101,6 +102,21 @@ def finish(started):
                 tail = "".join(f.readlines()[-15:])
         fail(f"{' '.join(cmd)} failed with {process.returncode}:\n{output[-2000:]}\n{tail}")
     return path
+
+
+def finish_together(runs):
+    """Waits for runs of start() that run at the same time; returns their logs' paths.  If one
+    fails, the others are stopped (a partner would otherwise wait for it) and it is
+    reported."""
+    while any(process.poll() is None for process, _, _ in runs):
+        failed = [run for run in runs if run[0].returncode not in (None, 0)]
+        if failed:
+            for process, _, _ in runs:
+                if process.poll() is None:
+                    process.kill()
+            finish(failed[0])
+        time.sleep(0.2)
+    return [finish(run) for run in runs]
 
 
 def run(engine, ranks, deck, workdir, log, variables):
