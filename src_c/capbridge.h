@@ -197,7 +197,7 @@ static inline int cb_certainly_apart(double rsq, double radsum)
 /* -------------------------------------------------------- bridge state */
 
 /* The state of the liquid bridge of one pair, kept by the engine in its pair history and
- * changed only by the calls below.  volume and active are the state; the other four are
+ * changed only by the calls below.  volume and active are the state; the other five are
  * derived from the volume, the two radii and the law whenever a bridge forms or its volume
  * is set (cb_bridge_set_volume), so that a bridge in contact costs no force-law evaluation
  * and a stretched one no rupture distance per step.  They are derived again by the calls
@@ -213,8 +213,11 @@ typedef struct cb_bridge {
     double force_contact;  /* the force at gap 0 [N] */
     double radius_sum;     /* r1 + r2 and r1 r2 of the radii the two above are for */
     double radius_product;
+    double inverse_decay_length; /* richefeu: 1/lambda (eq. 11) [1/m], so that a stretched
+                                  * bridge's force is force_contact exp(-gap/lambda); 0 for
+                                  * the other laws, whose force is evaluated in full */
 } cb_bridge;
-#define CB_BRIDGE_DOUBLES 6
+#define CB_BRIDGE_DOUBLES 7
 
 typedef enum cb_transition {
     CB_BRIDGE_STAYS_DRY = 0, /* no bridge before, none now */

@@ -13,16 +13,21 @@
 
 #define CB_PI 3.14159265358979323846
 
-cb_status cb_richefeu_force(const cb_law *law, const cb_pair *pair, double gap, double *force,
-                            double *stiffness)
+double cb_richefeu_inverse_length(const cb_law *law, const cb_pair *pair)
 {
-    double kappa = 2.0 * CB_PI * law->surface_tension * law->cos_theta;
     /* eq. 11 with 1/R1 + 1/R2 = 2/R_h and r = R_large/R_small: lambda = c sqrt(V/(R_h r));
      * three divisions instead of six (this law is the default of the engines' pair loops).
      * lambda >= sqrt(smallest subnormal) ~ 2e-162, so 1/lambda is finite. */
     double lambda = law->richefeu_c *
                     sqrt(pair->volume / pair->r_harmonic * (pair->r_small / pair->r_large));
-    double inverse_lambda = 1.0 / lambda;
+    return 1.0 / lambda;
+}
+
+cb_status cb_richefeu_force(const cb_law *law, const cb_pair *pair, double gap, double *force,
+                            double *stiffness)
+{
+    double kappa = 2.0 * CB_PI * law->surface_tension * law->cos_theta;
+    double inverse_lambda = cb_richefeu_inverse_length(law, pair);
     double f = kappa * pair->r_geometric * exp(-gap * inverse_lambda);
     *force = f;
     *stiffness = -f * inverse_lambda;

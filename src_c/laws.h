@@ -46,6 +46,8 @@ cb_status cb_pair_force(const cb_law *law, const cb_pair *pair, double rupture, 
 typedef cb_status (*cb_force_fn)(const cb_law *law, const cb_pair *pair, double gap,
                                  double *force, double *stiffness);
 
+/* Richefeu eq. 11: 1/lambda of a bridge (kept with the bridge by derive, bridge.c). */
+double cb_richefeu_inverse_length(const cb_law *law, const cb_pair *pair);
 cb_status cb_richefeu_force(const cb_law *law, const cb_pair *pair, double gap,
                             double *force, double *stiffness);
 cb_status cb_willett_force(const cb_law *law, const cb_pair *pair, double gap,

@@ -268,7 +268,7 @@ static void errors(const cb_law *law)
         expect_error(law, r, bad[i], 1e-6, v, wet, CB_ERR_NOT_FINITE);
         expect_error(law, r, r, bad[i], v, wet, CB_ERR_NOT_FINITE);
         expect_error(law, r, r, -1e-6, bad[i], dry, CB_ERR_NOT_FINITE);
-        /* any of the six doubles of a stored bridge */
+        /* any of the doubles of a stored bridge */
         for (int k = 0; k < CB_BRIDGE_DOUBLES; ++k) {
             cb_bridge corrupt = wet;
             ((double *)&corrupt)[k] = bad[i];
@@ -301,14 +301,16 @@ static void errors(const cb_law *law)
         ((double *)&zero_constant)[k] = 0.0;
         ((double *)&negative_constant)[k] = -1.0;
         ((double *)&dry_constant)[k] = 1.0;
-        /* (the contact force may be 0: a law with none at contact) */
-        if (k != 3) expect_error(law, r, r, -1e-6, v, zero_constant, CB_ERR_BRIDGE_STATE);
+        /* (the contact force may be 0: a law with none at contact; 1/lambda is 0 for
+         * every law but richefeu, and for it means "evaluate in full") */
+        if (k != 3 && k != 6) expect_error(law, r, r, -1e-6, v, zero_constant, CB_ERR_BRIDGE_STATE);
         expect_error(law, r, r, -1e-6, v, negative_constant, CB_ERR_BRIDGE_STATE);
         expect_error(law, r, r, -1e-6, v, dry_constant, CB_ERR_BRIDGE_STATE);
     }
 
     /* -0.0 is a dry volume and a contact gap. */
-    cb_bridge minus_zero = {-0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    cb_bridge minus_zero = {0};
+    minus_zero.volume = -0.0;
     CHECK(step(law, r, r, -0.0, v, &minus_zero, &released) == CB_BRIDGE_FORMED);
     CHECK(same_bits(minus_zero.volume, v));
 }
@@ -389,6 +391,30 @@ static void derived_constants(void)
     CHECK(same_bits(b.rupture, d) && same_bits(b.force_contact, f0) && f0 > 0.0);
     CHECK(b.radius_sum == r1 + r2 && b.radius_product == r1 * r2);
 
+    /* Richefeu eq. 11, lambda = c sqrt(V / (R_h r)), R_h = 2 r1 r2 / (r1 + r2), r = r2/r1,
+     * c = 0.9, written out here; a stretched bridge's force from it equals cb_force bit for
+     * bit (the same product), and 0 beyond the rupture distance */
+    const double lambda = 0.9 * sqrt(v / (2.0 * r1 * r2 / (r1 + r2)) * (r1 / r2));
+    CHECK(fabs(b.inverse_decay_length * lambda - 1.0) < 1e-14);
+    for (double gap = 0.0; gap <= 1.2 * d; gap += 0.05 * d) {
+        cb_bridge s = b;
+        double ref = 0.0, f = -1.0;
+        CHECK_STATUS(cb_force(&law, r1, r2, v, gap, &ref, NULL), CB_OK);
+        CHECK_STATUS(cb_bridge_force(&law, r1, r2, gap, &s, &f), CB_OK);
+        CHECK(same_bits(f, ref) && (gap <= d || f == 0.0));
+    }
+    /* another law reading this bridge (its constants not derived again, as the C API
+     * allows): the stretched force is that law's, not the stored exponential's */
+    cb_law willett_law;
+    cb_message msg;
+    CHECK_STATUS(cb_law_init(&willett_law, CB_MODEL_WILLETT, 0.072, 0.0), CB_OK);
+    CHECK_STATUS(cb_law_prepare(&willett_law, &msg), CB_OK);
+    double other = 0.0, other_ref = 0.0;
+    CHECK_STATUS(cb_bridge_force(&willett_law, r1, r2, 0.3 * d, &b, &other), CB_OK);
+    CHECK_STATUS(cb_force(&willett_law, r1, r2, v, 0.3 * d, &other_ref, NULL), CB_OK);
+    CHECK(same_bits(other, other_ref));
+    cb_law_release(&willett_law);
+
     /* the same pair seen from the other grain: nothing to derive */
     cb_bridge swapped = b;
     double released = -1.0;
@@ -415,7 +441,6 @@ static void derived_constants(void)
 
     /* the law changes: set_volume with the bridge's own volume derives it again */
     cb_law weaker = law;
-    cb_message msg;
     CHECK_STATUS(cb_law_configure(&weaker, "gamma", "0.05", &msg), CB_OK);
     CHECK_STATUS(cb_law_prepare(&weaker, &msg), CB_OK);
     c = b;

@@ -32,9 +32,9 @@ class PairGranCapillary : public Pair {
  public:
   // Layout of the pair history (doubles per neighbor pair):
   //   [0..2] tangential (shear) displacement, negated for the partner;
-  //   [3..8] the pair's cb_bridge, copied: volume [m^3], active (1.0 / 0.0), and the
+  //   [3..9] the pair's cb_bridge, copied: volume [m^3], active (1.0 / 0.0), and the
   //          constants the core derives from them (rupture distance, force at contact, the
-  //          radii they are for).
+  //          radii they are for, richefeu's 1/lambda).
   enum { HIST_SHEAR = 0, HIST_BRIDGE = 3, SIZE_HISTORY = 3 + CB_BRIDGE_DOUBLES };
   // How bridges get their liquid.
   enum { LIQUID_FIXED = 0, LIQUID_PROTOCOL1, LIQUID_PROTOCOL2, LIQUID_PROTOCOL3 };

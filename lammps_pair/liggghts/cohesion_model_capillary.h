@@ -20,10 +20,10 @@
        state in LIGGGHTS's contact history and does the MPI communication.
      - the bridge state of a pair, a cb_bridge (its volume, and the constants the core
        derives from it, so that a bridge in contact costs no force-law evaluation), is
-       six values of the contact history (capillaryBridgeVolume, ...Active, ...Rupture,
-       ...ForceContact, ...RadiusSum, ...RadiusProduct): it moves with the atoms,
-       survives re-neighboring and goes into restart files with the rest of the
-       contact history. The constants are derived again in the setup pass of every run
+       seven values of the contact history (capillaryBridgeVolume, ...Active, ...Rupture,
+       ...ForceContact, ...RadiusSum, ...RadiusProduct, ...InverseDecayLength): it moves
+       with the atoms, survives re-neighboring and goes into restart files with the rest
+       of the contact history. The constants are derived again in the setup pass of every run
        (the coefficients may have changed since the bridges formed).
      - parameters come from fix property/global (surfaceTension, contactAngle,
        bridgeVolume), per-particle free liquid from fix property/atom freeLiquid.
@@ -178,12 +178,14 @@ namespace ContactModels {
       // walls are dry: no history, no properties, no force
       if (!wall_) {
         // a cb_bridge, in its field order (none changes sign with the pair's order)
+        static_assert(CB_BRIDGE_DOUBLES == 7, "one history value per field of cb_bridge");
         history_offset_ = hsetup->add_history_value("capillaryBridgeVolume", "0");
         hsetup->add_history_value("capillaryBridgeActive", "0");
         hsetup->add_history_value("capillaryBridgeRupture", "0");
         hsetup->add_history_value("capillaryBridgeForceContact", "0");
         hsetup->add_history_value("capillaryBridgeRadiusSum", "0");
         hsetup->add_history_value("capillaryBridgeRadiusProduct", "0");
+        hsetup->add_history_value("capillaryBridgeInverseDecayLength", "0");
       }
     }
 
