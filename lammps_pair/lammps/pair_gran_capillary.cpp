@@ -755,8 +755,9 @@ void PairGranCapillary::derive_bridges()
                    atom->tag[i], atom->tag[j], bridge->volume);
       const int status = cb_bridge_set_volume(law(type[i], type[j]), radius[i], radius[j],
                                               bridge->volume, bridge);
-      // (a restart file of a build whose history was laid out otherwise, 5 values a pair
-      // before the bridge kept its constants: CB_ERR_BRIDGE_STATE, which says so)
+      // (a corrupted history: CB_ERR_BRIDGE_STATE, which says so; a restart file of a
+      // build whose history is laid out otherwise is refused before, by
+      // read_restart_settings)
       check_cb(status, "bridge constants at setup", type[i], type[j], radius[i], radius[j],
                bridge->volume, 0.0);
     }
@@ -1654,6 +1655,11 @@ void PairGranCapillary::read_restart(FILE *fp)
 
 void PairGranCapillary::write_restart_settings(FILE *fp)
 {
+  // first the number of values a pair's history holds: FixNeighHistory stores them without
+  // it, and reads them with the current build's count, so a file of a build with another
+  // layout would be misread (bridges shifted into other pairs' values) rather than refused
+  const int history_size = SIZE_HISTORY;
+  fwrite(&history_size, sizeof(int), 1, fp);
   fwrite(&friction_wet, sizeof(int), 1, fp);
   fwrite(&dashpot_floor, sizeof(double), 1, fp);
 }
@@ -1661,6 +1667,14 @@ void PairGranCapillary::write_restart_settings(FILE *fp)
 void PairGranCapillary::read_restart_settings(FILE *fp)
 {
   if (comm->me == 0) {
+    int history_size = 0;
+    utils::sfread(FLERR, &history_size, sizeof(int), 1, fp, nullptr, error);
+    // (files of builds before this check start with the friction setting, 0 or 1)
+    if (history_size != SIZE_HISTORY)
+      error->one(FLERR, "pair gran/capillary: this restart file was written by a build whose "
+                 "pair history is laid out otherwise (read {} where this build writes {} "
+                 "values a pair): its bridges cannot be read; write it again with the build "
+                 "that made it, or start from a data file", history_size, (int) SIZE_HISTORY);
     utils::sfread(FLERR, &friction_wet, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &dashpot_floor, sizeof(double), 1, fp, nullptr, error);
   }
