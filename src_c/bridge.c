@@ -133,7 +133,7 @@ static cb_status force_of(const cb_law *law, double r1, double r2, double gap,
     if (cb_bridge_held_in_contact(law, r1, r2, gap, bridge, force)) return CB_OK;
     /* stretched (gap > 0), richefeu: eq. 10 from the stored constants, the same product
      * cb_richefeu_force forms (kappa R_g exp(-gap/lambda)), bit for bit.  One exponential
-     * instead of a square root, four divisions and the exponential: x0.92-0.95 of the
+     * instead of a square root, four divisions and the exponential: x0.96-0.98 of the
      * benchmark scene's wet loop (bench/README.md).  A strict law checks its validity at
      * every evaluation, so it takes the full path. */
     if (bridge->inverse_decay_length > 0.0 && law->model == CB_MODEL_RICHEFEU &&
