@@ -5,10 +5,8 @@ warns and adds no capillary force.
 
 usage: bad_input.py LIGGGHTS_ENV [--workdir DIR]
 """
-import argparse
 import os
 import sys
-import tempfile
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -107,14 +105,9 @@ run             1
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("env")
-    parser.add_argument("--workdir", default="")
+    parser = lc.argument_parser(__doc__)
     args = parser.parse_args()
-    env = lc.read_env(args.env)
-    lc.check_models_current(env)
-    workdir = args.workdir or tempfile.mkdtemp(prefix="capbridge-liggghts-bad.")
-    os.makedirs(workdir, exist_ok=True)
+    env, workdir = lc.start(args.env, args.workdir, "bad")
     ok = True
     for k, (name, props, pair, newton, words) in enumerate(CASES):
         deck = os.path.join(workdir, "in.bad%02d" % k)

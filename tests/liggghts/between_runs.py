@@ -10,11 +10,9 @@ overlap, 2 pi gamma R (eq. 10 at contact), for that run's gamma.
 
 usage: between_runs.py LIGGGHTS_ENV [--workdir DIR]
 """
-import argparse
 import math
 import os
 import sys
-import tempfile
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -34,14 +32,9 @@ run             0
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("env")
-    parser.add_argument("--workdir", default="")
+    parser = lc.argument_parser(__doc__)
     args = parser.parse_args()
-    env = lc.read_env(args.env)
-    lc.check_models_current(env)
-    workdir = args.workdir or tempfile.mkdtemp(prefix="capbridge-liggghts-between-runs.")
-    os.makedirs(workdir, exist_ok=True)
+    env, workdir = lc.start(args.env, args.workdir, "between-runs")
     deck = os.path.join(workdir, "in.between_runs")
     with open(deck, "w") as f:
         f.write(lc.two_spheres_deck(KN, 0.5, GAMMAS[0], "law richefeu", 2 * R - OVERLAP, 2 * R) +

@@ -22,11 +22,9 @@ viscous.h) equals the case's volume.
 usage: easo_comparison.py LIGGGHTS_ENV [--laws LAW,...] [--output FILE]
                           [--workdir DIR] [--cases W11,R1]
 """
-import argparse
 import math
 import os
 import sys
-import tempfile
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -116,24 +114,19 @@ def pct(x):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("env")
+    parser = lc.argument_parser(__doc__)
     parser.add_argument("--laws", default=",".join(lc.LAWS))
     parser.add_argument("--check", action="store_true",
                         help="also check that easo/capillary/viscous equals 'capillary law "
                              "soulie' where they are the same law (theta = 0; needs soulie "
                              "in --laws)")
     parser.add_argument("--output", default="")
-    parser.add_argument("--workdir", default="")
     parser.add_argument("--cases", default="")
     args = parser.parse_args()
-    env = lc.read_env(args.env)
-    lc.check_models_current(env)
+    env, workdir = lc.start(args.env, args.workdir, "easo")
     cases = lc.gladkyy_cases()
     if args.cases:
         cases = [c for c in cases if c["name"] in args.cases.split(",")]
-    workdir = args.workdir or tempfile.mkdtemp(prefix="capbridge-liggghts-easo.")
-    os.makedirs(workdir, exist_ok=True)
     models = [("easo/capillary/viscous", "easo/capillary/viscous", True)]
     for law in args.laws.split(","):
         models.append(("capillary law " + law, "capillary law %s" % law, False))

@@ -9,11 +9,9 @@ mu (f_n + f_c) (f_n the spring's repulsion, f_c the capillary attraction); with
 
 usage: friction.py LIGGGHTS_ENV [--workdir DIR]
 """
-import argparse
 import math
 import os
 import sys
-import tempfile
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -55,14 +53,9 @@ def measure(env, switch, workdir):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("env")
-    parser.add_argument("--workdir", default="")
+    parser = lc.argument_parser(__doc__)
     args = parser.parse_args()
-    env = lc.read_env(args.env)
-    lc.check_models_current(env)
-    workdir = args.workdir or tempfile.mkdtemp(prefix="capbridge-liggghts-friction.")
-    os.makedirs(workdir, exist_ok=True)
+    env, workdir = lc.start(args.env, args.workdir, "friction")
     ok = True
     kappa_r = 2 * math.pi * 0.0728 * R  # Richefeu eq. 10 in overlap: kappa R
     for switch in ("on", "off"):

@@ -4,11 +4,13 @@ Standard library only. Runs LIGGGHTS from a liggghts.env written by
 scripts/build_liggghts.sh, runs the capbridge CLI, and reads Gladkyy's 13 cases from
 reference_data/cases.csv.
 """
+import argparse
 import hashlib
 import os
 import shlex
 import subprocess
 import sys
+import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
@@ -37,6 +39,25 @@ def read_env(path):
         if key not in env:
             fail("%s has no %s (rerun scripts/build_liggghts.sh)" % (path, key))
     return env
+
+
+def argument_parser(doc):
+    """The command line every LIGGGHTS test shares: the liggghts.env file and --workdir;
+    a test adds its own options."""
+    parser = argparse.ArgumentParser(description=doc.split("\n")[0])
+    parser.add_argument("env")
+    parser.add_argument("--workdir", default="")
+    return parser
+
+
+def start(env_path, workdir, name):
+    """The engine's env (checked to hold this repository's models and core) and the test's
+    working directory: --workdir, or a new temporary one named after the test."""
+    env = read_env(env_path)
+    check_models_current(env)
+    workdir = workdir or tempfile.mkdtemp(prefix="capbridge-liggghts-%s." % name)
+    os.makedirs(workdir, exist_ok=True)
+    return env, workdir
 
 
 def check_models_current(env):

@@ -14,7 +14,6 @@ import argparse
 import os
 import subprocess
 import sys
-import tempfile
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -159,8 +158,7 @@ def main():
     parser.add_argument("--workdir", default="")
     args = parser.parse_args()
     args.capbridge = os.path.abspath(args.capbridge)
-    env = lc.read_env(args.env)
-    lc.check_models_current(env)
+    env, workdir = lc.start(args.env, args.workdir, "pulloff")
     cases = lc.gladkyy_cases()
     if len(cases) != 13:
         lc.fail("reference_data/cases.csv holds %d cases, not 13" % len(cases))
@@ -176,8 +174,6 @@ def main():
     if args.cases:
         wanted = args.cases.split(",")
         runs = [r for r in runs if r[0] in wanted]
-    workdir = args.workdir or tempfile.mkdtemp(prefix="capbridge-liggghts-pulloff.")
-    os.makedirs(workdir, exist_ok=True)
     ok = True
     for name, law, options, run in runs:
         ok = compare(by_name[name], law, options, run, args.capbridge, env, args.ranks,

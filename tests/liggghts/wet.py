@@ -10,10 +10,8 @@ and across rank counts: the number of bridges is the same at every output of the
 
 usage: wet.py LIGGGHTS_ENV [--workdir DIR] [--ranks 1,2]
 """
-import argparse
 import os
 import sys
-import tempfile
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -63,16 +61,11 @@ def check(series, ranks):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("env")
-    parser.add_argument("--workdir", default="")
+    parser = lc.argument_parser(__doc__)
     parser.add_argument("--ranks", default="1,2")
     parser.add_argument("--law", default="willett")
     args = parser.parse_args()
-    env = lc.read_env(args.env)
-    lc.check_models_current(env)
-    workdir = args.workdir or tempfile.mkdtemp(prefix="capbridge-liggghts-wet.")
-    os.makedirs(workdir, exist_ok=True)
+    env, workdir = lc.start(args.env, args.workdir, "wet")
     ok = True
     results = {}
     for ranks in [int(r) for r in args.ranks.split(",")]:
