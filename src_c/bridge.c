@@ -129,20 +129,11 @@ static cb_status force_of(const cb_law *law, double r1, double r2, double gap,
         *force = 0.0;
         return CB_OK;
     }
-    /* in contact, the stored force (always, for a valid bridge with these constants) */
-    if (cb_bridge_held_in_contact(law, r1, r2, gap, bridge, force)) return CB_OK;
-    /* stretched (gap > 0), richefeu: eq. 10 from the stored constants, the same product
-     * cb_richefeu_force forms (kappa R_g exp(-gap/lambda)), bit for bit.  One exponential
-     * instead of a square root, four divisions and the exponential: x0.96-0.98 of the
-     * benchmark scene's wet loop (bench/README.md).  A strict law checks its validity at
-     * every evaluation, so it takes the full path. */
-    if (bridge->inverse_decay_length > 0.0 && law->model == CB_MODEL_RICHEFEU &&
-        law->validity != CB_VALIDITY_STRICT) {
-        *force = gap > bridge->rupture
-                     ? 0.0
-                     : bridge->force_contact * exp(-gap * bridge->inverse_decay_length);
-        return CB_OK;
-    }
+    /* From the stored constants where they give it (in contact: always, for a valid
+     * bridge with these constants; stretched, richefeu: one exponential instead of a
+     * square root, four divisions and the exponential, x0.96-0.98 of the benchmark
+     * scene's wet loop, bench/README.md); else the law in full. */
+    if (cb_bridge_held(law, r1, r2, gap, bridge, force)) return CB_OK;
     cb_pair pair = cb_pair_make(law, r1, r2, bridge->volume);
     return cb_pair_force(law, &pair, bridge->rupture, gap, force, NULL);
 }

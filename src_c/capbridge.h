@@ -19,6 +19,7 @@
 #define CAPBRIDGE_H
 
 #include <float.h>
+#include <math.h>
 #include <stddef.h>
 
 #ifdef __cplusplus
@@ -246,24 +247,40 @@ cb_status cb_bridge_step(const cb_law *law, double r1, double r2, double gap,
 cb_status cb_bridge_force(const cb_law *law, double r1, double r2, double gap,
                           const cb_bridge *bridge, double *force);
 
-/* For an engine's pair loop, inline: a bridge in contact (gap <= 0) whose constants are for
- * these radii is held, and its force is the stored one (cb_pair_force's overlap rule) —
- * what cb_bridge_step would do, without the call: the common case of a dense packing,
- * where the call cost ~10 % of the benchmark scene's loop time.  Returns 1 and sets *force
- * then; returns 0, touching nothing, where cb_bridge_step must be called: no bridge, a
- * gap > 0 (or NaN), other radii, or a stored state that is not an active bridge's
- * (cb_bridge_step reports it). */
-static inline int cb_bridge_held_in_contact(const cb_law *law, double r1, double r2,
-                                            double gap, const cb_bridge *bridge, double *force)
+/* For an engine's pair loop, inline: a bridge that is held at this gap with no change of
+ * state and whose force comes from its stored constants — what cb_bridge_step would do,
+ * bit for bit, without the call (its validation and copies):
+ *   - in contact (gap <= 0), any law: the stored force (cb_pair_force's overlap rule);
+ *     the common case of a dense packing, where the call cost ~10 % of the benchmark
+ *     scene's loop time;
+ *   - stretched (0 < gap <= rupture distance), richefeu with its stored 1/lambda and a
+ *     validity that is not strict: force_contact exp(-gap/lambda) (eq. 10).
+ * Returns 1 and sets *force then; returns 0, touching nothing, where cb_bridge_step must
+ * be called: no bridge, a bridge to rupture, a gap that is NaN, other radii, another law's
+ * stretched bridge, or a stored state that is not an active bridge's (cb_bridge_step
+ * reports it).  Uses exp(): the engine links libm. */
+static inline int cb_bridge_held(const cb_law *law, double r1, double r2, double gap,
+                                 const cb_bridge *bridge, double *force)
 {
-    if (!(bridge->active == 1.0 && gap <= 0.0 && bridge->radius_sum == r1 + r2 &&
+    if (!(bridge->active == 1.0 && bridge->radius_sum == r1 + r2 &&
           bridge->radius_product == r1 * r2 && bridge->volume > 0.0 &&
           bridge->volume <= DBL_MAX && bridge->force_contact >= 0.0 &&
           bridge->force_contact <= DBL_MAX))
         return 0;
-    /* Richefeu eq. 10 keeps the contact value in overlap; Gladkyy eq. 4 applies none */
-    *force = gap < 0.0 && law->overlap == CB_OVERLAP_NONE ? 0.0 : bridge->force_contact;
-    return 1;
+    if (gap <= 0.0) {
+        /* Richefeu eq. 10 keeps the contact value in overlap; Gladkyy eq. 4 applies none */
+        *force = gap < 0.0 && law->overlap == CB_OVERLAP_NONE ? 0.0 : bridge->force_contact;
+        return 1;
+    }
+    /* the product cb_richefeu_force forms (kappa R_g exp(-gap/lambda)); a strict law checks
+     * its validity at every evaluation, so it takes the call */
+    if (gap <= bridge->rupture && bridge->rupture <= DBL_MAX &&
+        bridge->inverse_decay_length > 0.0 && bridge->inverse_decay_length <= DBL_MAX &&
+        law->model == CB_MODEL_RICHEFEU && law->validity != CB_VALIDITY_STRICT) {
+        *force = bridge->force_contact * exp(-gap * bridge->inverse_decay_length);
+        return 1;
+    }
+    return 0;
 }
 
 /* Set the bridge's volume (a liquid protocol moves liquid into or out of it) and derive

@@ -58,7 +58,7 @@ static cb_transition step(const cb_law *law, double r1, double r2, double gap, d
 {
     cb_bridge copy = *bridge, before = *bridge;
     double inline_force = -1.0;
-    const int held_inline = cb_bridge_held_in_contact(law, r1, r2, gap, bridge, &inline_force);
+    const int held_inline = cb_bridge_held(law, r1, r2, gap, bridge, &inline_force);
     cb_transition t = (cb_transition)-1, t_step = (cb_transition)-2;
     double released_step = -2.0, force = -1.0;
     CHECK_STATUS(cb_bridge_update(law, r1, r2, gap, available, bridge, &t, released), CB_OK);
@@ -487,25 +487,51 @@ static void derived_constants(void)
     CHECK(memcmp(&c, &corrupt, sizeof c) == 0);
     CHECK(force == 3.0);
 
-    /* the inline shortcut applies to exactly the bridges in contact with these constants */
+    /* the inline shortcut applies to exactly the bridges held with these constants: in
+     * contact, or (richefeu, not strict) stretched within the rupture distance, where its
+     * force is cb_force's bit for bit */
     double quick = -1.0;
-    CHECK(cb_bridge_held_in_contact(&law, r1, r2, -1e-7, &b, &quick) && same_bits(quick, f0));
-    CHECK(cb_bridge_held_in_contact(&law, r2, r1, 0.0, &b, &quick) && same_bits(quick, f0));
+    CHECK(cb_bridge_held(&law, r1, r2, -1e-7, &b, &quick) && same_bits(quick, f0));
+    CHECK(cb_bridge_held(&law, r2, r1, 0.0, &b, &quick) && same_bits(quick, f0));
+    const double stretched[] = {1e-12, 0.5 * d, d};
+    for (int k = 0; k < 3; ++k) {
+        double ref = 0.0;
+        CHECK_STATUS(cb_force(&law, r1, r2, v, stretched[k], &ref, NULL), CB_OK);
+        quick = -1.0;
+        CHECK(cb_bridge_held(&law, r1, r2, stretched[k], &b, &quick) && same_bits(quick, ref) &&
+              ref > 0.0);
+    }
     quick = -1.0;
-    CHECK(!cb_bridge_held_in_contact(&law, r1, r2, 1e-9, &b, &quick));
-    CHECK(!cb_bridge_held_in_contact(&law, r1, r2, NAN, &b, &quick));
-    CHECK(!cb_bridge_held_in_contact(&law, r1, 1.01 * r2, -1e-7, &b, &quick));
-    CHECK(!cb_bridge_held_in_contact(&law, r1, r2, -1e-7, &dry, &quick));
+    CHECK(!cb_bridge_held(&law, r1, r2, nextafter(d, 1.0), &b, &quick)); /* to rupture */
+    CHECK(!cb_bridge_held(&law, r1, r2, NAN, &b, &quick));
+    CHECK(!cb_bridge_held(&law, r1, 1.01 * r2, -1e-7, &b, &quick));
+    CHECK(!cb_bridge_held(&law, r1, r2, -1e-7, &dry, &quick));
+    CHECK(!cb_bridge_held(&law, r1, r2, 1e-9, &dry, &quick));
     const double broken[] = {NAN, -1.0, HUGE_VAL};
     for (int k = 0; k < 3; ++k) {
-        cb_bridge bad_force = b, bad_volume = b, bad_flag = b;
+        cb_bridge bad_force = b, bad_volume = b, bad_flag = b, bad_rupture = b, bad_decay = b;
         bad_force.force_contact = broken[k];
         bad_volume.volume = broken[k];
         bad_flag.active = k == 0 ? NAN : 0.5;
-        CHECK(!cb_bridge_held_in_contact(&law, r1, r2, -1e-7, &bad_force, &quick));
-        CHECK(!cb_bridge_held_in_contact(&law, r1, r2, -1e-7, &bad_volume, &quick));
-        CHECK(!cb_bridge_held_in_contact(&law, r1, r2, -1e-7, &bad_flag, &quick));
+        bad_rupture.rupture = broken[k];
+        bad_decay.inverse_decay_length = broken[k];
+        CHECK(!cb_bridge_held(&law, r1, r2, -1e-7, &bad_force, &quick));
+        CHECK(!cb_bridge_held(&law, r1, r2, -1e-7, &bad_volume, &quick));
+        CHECK(!cb_bridge_held(&law, r1, r2, -1e-7, &bad_flag, &quick));
+        CHECK(!cb_bridge_held(&law, r1, r2, 0.5 * d, &bad_rupture, &quick));
+        CHECK(!cb_bridge_held(&law, r1, r2, 0.5 * d, &bad_decay, &quick));
     }
+    /* stretched, the call where the stored constants do not give the force: 1/lambda 0
+     * (the full evaluation), a strict law, another law reading the bridge */
+    cb_bridge no_decay = b;
+    no_decay.inverse_decay_length = 0.0;
+    CHECK(!cb_bridge_held(&law, r1, r2, 0.5 * d, &no_decay, &quick));
+    cb_law strict_copy = law;
+    strict_copy.validity = CB_VALIDITY_STRICT;
+    CHECK(!cb_bridge_held(&strict_copy, r1, r2, 0.5 * d, &b, &quick));
+    cb_law other_model = law;
+    other_model.model = CB_MODEL_WILLETT;
+    CHECK(!cb_bridge_held(&other_model, r1, r2, 0.5 * d, &b, &quick));
     CHECK(quick == -1.0);
 
     /* Gladkyy eq. 4 (overlap none): the stored contact force applies at gap 0 only */

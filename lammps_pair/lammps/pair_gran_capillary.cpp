@@ -1016,9 +1016,11 @@ void PairGranCapillary::form_bridges_and_forces()
           check_cb(status, "capillary force", itype, jtype, radius[i], radius[j],
                    bridge->volume, gap);
         }
-      } else if (cb_bridge_held_in_contact(pair_law, radius[i], radius[j], gap, bridge,
-                                           &capillary)) {
-        // the common case, a bridge held in contact: its stored force, inline
+      } else if (rsq < tp.cutsq &&
+                 cb_bridge_held(pair_law, radius[i], radius[j], gap, bridge, &capillary)) {
+        // the common case, a bridge held (in contact, or a richefeu bridge stretched within
+        // its rupture distance): its force from the stored constants, inline.  (Within the
+        // reach: one held beyond it is ruptured below.)
       } else if (bridge->active != 0.0 ||
                  (tp.formation_volume > 0.0 && wet_pair(i, j, tp))) {
         // a bridge to advance, or one to form (dry pairs that cannot get one skip the core)

@@ -357,7 +357,7 @@ namespace ContactModels {
       double capillary = 0.0;
       bool have_force = false;
 
-      if (updating_ && cb_bridge_held_in_contact(law, ra, rb, gap, &bridge, &capillary)) {
+      if (updating_ && cb_bridge_held(law, ra, rb, gap, &bridge, &capillary)) {
         // the common case, a bridge held in contact: its stored force, inline
         have_force = true;
         if (tally_) tally(i, j_local ? j : -1, bridge.volume);

@@ -7,6 +7,7 @@
 #    'dashpot both', against the analytic values, and again from a restart file;
 #  - the bridge's stored constants follow the coefficients (pair_coeff between two runs)
 #    and the radii (a sphere growing under fix adapt): its force against the CLI's;
+#  - a bridge larger than the reach is built for ruptures at the reach, with a warning;
 #  - the neighbor reach: LAMMPS's neighbor cutoff is r1 + r2 + the rupture distance of
 #    the bridge volume in use (fixed: the pair_coeff volume; a protocol: vmax) + skin.
 . "$(dirname "$0")/lib.sh" "$@"
@@ -83,6 +84,29 @@ if lmp 1 "$log" -in "$DECKS/in.rederive" -var gamma1 0.0728 -var gamma2 0.05 -va
     done
 else
     fail "rederive: LAMMPS failed: $(grep -h -m1 ERROR "$log"*)"
+fi
+
+# a bridge larger than the reach is built for (the volume lowered between two runs) is
+# ruptured at the reach, before the pair leaves the neighbor list with its liquid: held by
+# its own rupture distance, (1e-11)^(1/3) = 215 um, it would last until re-neighboring
+# dropped it.  Sphere 2 moves 1 um a step from contact; reach gap (1e-13)^(1/3) = 46.4 um.
+log="$TMP/reach_rupture.log"
+if lmp 1 "$log" -in "$DECKS/in.reach" -var small 1e-13 >/dev/null 2>&1; then
+    thermo "$log" >"$TMP/rows"
+    # the first step i whose centre distance 2 mm + i um reaches the cutoff
+    expected=$(awk 'BEGIN { cut = 2e-3 + exp(log(1e-13) / 3)
+        for (i = 1; (2e-3 + i * 1e-6) < cut; i++); print i }')
+    got=$(awk 'NF == 3 && $2 == 0 { print $1; exit }' "$TMP/rows")
+    ruptured=$(awk -v s="$got" '$1 == s { print $3 }' "$TMP/rows")
+    checks=$((checks + 1))
+    [ "$got" = "$expected" ] && [ "$ruptured" = 1 ] ||
+        fail "reach rupture: the bridge went at step '$got' (ruptured '$ruptured'), expected step $expected (1 ruptured)"
+    checks=$((checks + 1))
+    grep -q "1 bridge(s) ruptured at the neighbor reach" "$log.screen" ||
+        fail "reach rupture: no warning of a bridge ruptured at the neighbor reach"
+    echo "reach rupture: the bridge of 1e-11 m^3 ruptured at step $got (cutoff for 1e-13 m^3: step $expected)"
+else
+    fail "reach rupture: LAMMPS failed: $(grep -h -m1 ERROR "$log"*)"
 fi
 
 # the neighbor reach
