@@ -722,7 +722,13 @@ void PairGranCapillary::compute(int eflag, int vflag)
     update_bridges();
     exchange_liquid();
   }
-  form_bridges_and_forces();
+  // compiled twice: a dry run (no type pair can hold a bridge, init_style) runs a loop
+  // without any bridge code, ~14 % fewer instructions in the pair loop (callgrind,
+  // bench/README.md): a scene pays only for what it uses
+  if (bridges_possible)
+    form_bridges_and_forces<true>();
+  else
+    form_bridges_and_forces<false>();
 }
 
 /* ----------------------------------------------------------------------
@@ -926,7 +932,7 @@ void PairGranCapillary::exchange_liquid()
    phase 2 (all modes): bridge formation and the forces
 ------------------------------------------------------------------------- */
 
-void PairGranCapillary::form_bridges_and_forces()
+template <bool BRIDGES> void PairGranCapillary::form_bridges_and_forces()
 {
   const int history_update = update->setupflag ? 0 : 1;
   AtomArrays a;
@@ -983,73 +989,76 @@ void PairGranCapillary::form_bridges_and_forces()
       const TypePair &tp = type_pair(itype, jtype);
       const cb_law *pair_law = tp.law;
       double capillary = 0.0;
-      if (per_atom) {
-        // the bridges were advanced in update_bridges(): here they form, or give their force
-        if (bridge->active == 0.0) {
-          if (gap <= 0.0 && wet_pair(i, j, tp)) {
-            double offer_i = offer[i], offer_j = offer[j], available = 0.0;
-            int status = cb_protocol2_take(&offer_i, &offer_j, &available);
-            check_cb(status, "liquid take", itype, jtype, radius[i], radius[j], available, gap);
-            if (available > 0.0) {
-              cb_transition transition;
-              double none = 0.0;
-              status = cb_bridge_step(pair_law, radius[i], radius[j], gap, available, bridge,
-                                      &transition, &none, &capillary);
-              check_cb(status, "bridge formation", itype, jtype, radius[i], radius[j],
-                       available, gap);
-              if (transition == CB_BRIDGE_FORMED && counted(i, j)) n_formed += 1.0;
+      // (a run in which no type pair can hold a bridge: the contact forces alone)
+      if (BRIDGES) {
+        if (per_atom) {
+          // the bridges were advanced in update_bridges(): here they form, or give their force
+          if (bridge->active == 0.0) {
+            if (gap <= 0.0 && wet_pair(i, j, tp)) {
+              double offer_i = offer[i], offer_j = offer[j], available = 0.0;
+              int status = cb_protocol2_take(&offer_i, &offer_j, &available);
+              check_cb(status, "liquid take", itype, jtype, radius[i], radius[j], available, gap);
+              if (available > 0.0) {
+                cb_transition transition;
+                double none = 0.0;
+                status = cb_bridge_step(pair_law, radius[i], radius[j], gap, available, bridge,
+                                        &transition, &none, &capillary);
+                check_cb(status, "bridge formation", itype, jtype, radius[i], radius[j],
+                         available, gap);
+                if (transition == CB_BRIDGE_FORMED && counted(i, j)) n_formed += 1.0;
+              }
+            }
+          } else {
+            if (protocol3) {
+              double deposited = 0.0;
+              if (deposit[i] > 0.0 && best_partner[i] == tag[j]) deposited += deposit[i];
+              if (deposit[j] > 0.0 && best_partner[j] == tag[i]) deposited += deposit[j];
+              if (deposited > 0.0) {
+                const double grown = bridge->volume + deposited;
+                int status = cb_bridge_set_volume(pair_law, radius[i], radius[j], grown, bridge);
+                check_cb(status, "Protocol 3 deposit", itype, jtype, radius[i], radius[j], grown,
+                         gap);
+              }
+            }
+            int status = cb_bridge_force(pair_law, radius[i], radius[j], gap, bridge, &capillary);
+            check_cb(status, "capillary force", itype, jtype, radius[i], radius[j],
+                     bridge->volume, gap);
+          }
+        } else if (rsq < tp.cutsq &&
+                   cb_bridge_held(pair_law, radius[i], radius[j], gap, bridge, &capillary)) {
+          // the common case, a bridge held (in contact, or a richefeu bridge stretched within
+          // its rupture distance): its force from the stored constants, inline.  (Within the
+          // reach: one held beyond it is ruptured below.)
+        } else if (bridge->active != 0.0 ||
+                   (tp.formation_volume > 0.0 && wet_pair(i, j, tp))) {
+          // a bridge to advance, or one to form (dry pairs that cannot get one skip the core)
+          const double available = bridge->active != 0.0 ? 0.0 : tp.formation_volume;
+          double vol = 0.0;
+          cb_transition transition;
+          const double before = bridge->volume;
+          int status = cb_bridge_step(pair_law, radius[i], radius[j], gap, available, bridge,
+                                      &transition, &vol, &capillary);
+          check_cb(status, "bridge update", itype, jtype, radius[i], radius[j],
+                   bridge->active != 0.0 ? bridge->volume : MAX(before, available), gap);
+          if (transition == CB_BRIDGE_FORMED && counted(i, j)) n_formed += 1.0;
+          if (transition == CB_BRIDGE_RUPTURED && counted(i, j)) n_ruptured += 1.0;
+          if (transition != CB_BRIDGE_RUPTURED) vol = 0.0;
+          if (bridge->active != 0.0 && rsq >= tp.cutsq) {
+            // held beyond the reach (a volume above the one the reach was built for):
+            // ruptured here, before the pair leaves the neighbor list with its liquid
+            vol = bridge->volume;
+            *bridge = cb_bridge{};
+            capillary = 0.0;
+            if (counted(i, j)) {
+              n_reach += 1.0;
+              n_ruptured += 1.0;
             }
           }
-        } else {
-          if (protocol3) {
-            double deposited = 0.0;
-            if (deposit[i] > 0.0 && best_partner[i] == tag[j]) deposited += deposit[i];
-            if (deposit[j] > 0.0 && best_partner[j] == tag[i]) deposited += deposit[j];
-            if (deposited > 0.0) {
-              const double grown = bridge->volume + deposited;
-              int status = cb_bridge_set_volume(pair_law, radius[i], radius[j], grown, bridge);
-              check_cb(status, "Protocol 3 deposit", itype, jtype, radius[i], radius[j], grown,
-                       gap);
-            }
-          }
-          int status = cb_bridge_force(pair_law, radius[i], radius[j], gap, bridge, &capillary);
-          check_cb(status, "capillary force", itype, jtype, radius[i], radius[j],
-                   bridge->volume, gap);
+          if (vol > 0.0 && liquid_mode == LIQUID_PROTOCOL1 && counted(i, j)) pool_released += vol;
         }
-      } else if (rsq < tp.cutsq &&
-                 cb_bridge_held(pair_law, radius[i], radius[j], gap, bridge, &capillary)) {
-        // the common case, a bridge held (in contact, or a richefeu bridge stretched within
-        // its rupture distance): its force from the stored constants, inline.  (Within the
-        // reach: one held beyond it is ruptured below.)
-      } else if (bridge->active != 0.0 ||
-                 (tp.formation_volume > 0.0 && wet_pair(i, j, tp))) {
-        // a bridge to advance, or one to form (dry pairs that cannot get one skip the core)
-        const double available = bridge->active != 0.0 ? 0.0 : tp.formation_volume;
-        double vol = 0.0;
-        cb_transition transition;
-        const double before = bridge->volume;
-        int status = cb_bridge_step(pair_law, radius[i], radius[j], gap, available, bridge,
-                                    &transition, &vol, &capillary);
-        check_cb(status, "bridge update", itype, jtype, radius[i], radius[j],
-                 bridge->active != 0.0 ? bridge->volume : MAX(before, available), gap);
-        if (transition == CB_BRIDGE_FORMED && counted(i, j)) n_formed += 1.0;
-        if (transition == CB_BRIDGE_RUPTURED && counted(i, j)) n_ruptured += 1.0;
-        if (transition != CB_BRIDGE_RUPTURED) vol = 0.0;
-        if (bridge->active != 0.0 && rsq >= tp.cutsq) {
-          // held beyond the reach (a volume above the one the reach was built for):
-          // ruptured here, before the pair leaves the neighbor list with its liquid
-          vol = bridge->volume;
-          *bridge = cb_bridge{};
-          capillary = 0.0;
-          if (counted(i, j)) {
-            n_reach += 1.0;
-            n_ruptured += 1.0;
-          }
-        }
-        if (vol > 0.0 && liquid_mode == LIQUID_PROTOCOL1 && counted(i, j)) pool_released += vol;
       }
-      pair_force(a, tp, i, j, delx, dely, delz, rsq, r, gap, capillary, history, touch[jj],
-                 history_update);
+      pair_force<BRIDGES>(a, tp, i, j, delx, dely, delz, rsq, r, gap, capillary, history,
+                          touch[jj], history_update);
     }
   }
 }
@@ -1059,6 +1068,7 @@ void PairGranCapillary::form_bridges_and_forces()
    caller with the bridge's update); keeps the history flag
 ------------------------------------------------------------------------- */
 
+template <bool BRIDGES>
 void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int i, int j,
                                    double delx, double dely, double delz, double rsq, double r,
                                    double gap, double capillary, double *history, int &touch,
@@ -1081,10 +1091,10 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
   // Protocol 1 the same way, and by FixNeighHistory for every pair it does not carry over
   // at re-neighboring.  The pair loops rely on it to skip flagged-0 pairs that are apart.
   const int in_contact = tp.contact_on && gap < 0.0;
-  touch = (in_contact || bridge->active != 0.0) ? 1 : 0;
+  touch = (in_contact || (BRIDGES && bridge->active != 0.0)) ? 1 : 0;
   if (!in_contact) {
     shear[0] = shear[1] = shear[2] = 0.0;
-    if (capillary == 0.0) return;
+    if (!BRIDGES || capillary == 0.0) return;
   }
 
   const double rinv = 1.0 / r;

@@ -174,7 +174,9 @@ class PairGranCapillary : public Pair {
                             double r2, double vol, double gap);
   void derive_bridges();
   void update_bridges();
-  void form_bridges_and_forces();
+  // BRIDGES false: a run in which no type pair can hold a bridge (bridges_possible 0)
+  template <bool BRIDGES> void form_bridges_and_forces();
+  template <bool BRIDGES>
   void pair_force(const AtomArrays &a, const TypePair &tp, int i, int j, double delx,
                   double dely, double delz, double rsq, double r, double gap, double capillary,
                   double *history, int &touch, int history_update);
