@@ -69,19 +69,22 @@ def loops(log):
     return found
 
 
-def start(engine, ranks, deck, workdir, log, variables, core=None):
+def start(engine, ranks, deck, workdir, log, variables, core=None, tool=None):
     """Starts one deck under mpirun -np ranks in workdir with -var NAME VALUE...; engine is
     (mpirun command, engine command as a list).  With core, one rank pinned to that core
-    (the engine started without mpirun, under taskset).  Returns (process, command, log
+    (the engine started without mpirun, under taskset); with tool (a command as a list, e.g.
+    valgrind's), one rank run under it, without mpirun.  Returns (process, command, log
     path) for finish()."""
     mpirun, command = engine
     os.makedirs(workdir, exist_ok=True)
-    if core is None:
-        launcher = mpirun.split() + ["-np", str(ranks)]
-    elif ranks == 1:
+    if (core is not None or tool is not None) and ranks != 1:
+        fail("a run pinned to one core or under a tool has one rank")
+    if tool is not None:
+        launcher = list(tool)
+    elif core is not None:
         launcher = ["taskset", "-c", str(core)]
     else:
-        fail("a run pinned to one core has one rank")
+        launcher = mpirun.split() + ["-np", str(ranks)]
     cmd = launcher + command + ["-in", deck, "-log", log, "-screen", "none"]
     for name, value in variables.items():
         cmd += ["-var", name, str(value)]

@@ -2,7 +2,7 @@
 # Installs what capbridge needs from Debian's packages, once: a second run only checks.
 set -euo pipefail
 
-packages=(build-essential cmake clang libclang-rt-14-dev python3-numpy python3-matplotlib)
+packages=(build-essential cmake clang libclang-rt-14-dev python3-numpy python3-matplotlib valgrind)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
