@@ -144,6 +144,7 @@ PairGranCapillary::PairGranCapillary(LAMMPS *lmp) : Pair(lmp)
   freeze_group_bit = 0;
 
   fix_history = nullptr;
+  history_size = 0;
   fix_liquid = nullptr;
   liquid_mode = LIQUID_FIXED;
   liquid_groupbit = 0;
@@ -177,7 +178,7 @@ PairGranCapillary::~PairGranCapillary()
   if (!fix_history)
     modify->delete_fix("NEIGH_HISTORY_CAPILLARY_DUMMY" + std::to_string(instance_me));
   else
-    modify->delete_fix("NEIGH_HISTORY_CAPILLARY" + std::to_string(instance_me));
+    modify->delete_fix(history_id(history_size));
 
   if (allocated) {
     memory->destroy(setflag);
@@ -424,17 +425,6 @@ void PairGranCapillary::init_style()
 
   dt = update->dt;
 
-  if (fix_history == nullptr) {
-    auto cmd = fmt::format("NEIGH_HISTORY_CAPILLARY{} all NEIGH_HISTORY {}", instance_me,
-                           (int) SIZE_HISTORY);
-    fix_history = dynamic_cast<FixNeighHistory *>(modify->replace_fix(
-        "NEIGH_HISTORY_CAPILLARY_DUMMY" + std::to_string(instance_me), cmd, 1));
-    fix_history->pair = this;
-  }
-  fix_history = dynamic_cast<FixNeighHistory *>(
-      modify->get_fix_by_id("NEIGH_HISTORY_CAPILLARY" + std::to_string(instance_me)));
-  if (!fix_history) error->all(FLERR, "Pair gran/capillary: could not find its NEIGH_HISTORY fix");
-
   auto freezes = modify->get_fix_by_style("^freeze");
   if (freezes.size() > 1) error->all(FLERR, "Only one fix freeze command at a time allowed");
   freeze_group_bit = freezes.empty() ? 0 : freezes.front()->groupbit;
@@ -490,6 +480,7 @@ void PairGranCapillary::init_style()
     neighbor->add_request(this, NeighConst::REQ_HISTORY);
   else
     neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_HISTORY);
+  create_history();
 
   // per-atom liquid exchange within a force evaluation (Protocols 2, 3)
   if (liquid_mode == LIQUID_PROTOCOL2 || liquid_mode == LIQUID_PROTOCOL3) {
@@ -500,6 +491,83 @@ void PairGranCapillary::init_style()
   }
 
   radius_ranges();
+}
+
+/* ----------------------------------------------------------------------
+   the pair history: one NEIGH_HISTORY fix per layout ID, so that a restart file's per-atom
+   history is handed (by ID) only to a fix of its own layout
+------------------------------------------------------------------------- */
+
+std::string PairGranCapillary::history_id(int size) const
+{
+  return fmt::format("NEIGH_HISTORY_CAPILLARY{}{}", size == SIZE_CONTACT ? "_CONTACT" : "",
+                     instance_me);
+}
+
+/* ----------------------------------------------------------------------
+   at the first init, the NEIGH_HISTORY fix takes the placeholder's place in the fix list,
+   with the layout this run needs (or a restart file's); a later run that can hold bridges
+   widens a contact layout.  A dry scene's pairs carry 3 values instead of 10: the liquid-off
+   side of the benchmark x0.92-0.94 (bench/README.md).
+------------------------------------------------------------------------- */
+
+void PairGranCapillary::create_history()
+{
+  if (fix_history == nullptr) {
+    if (history_size == 0) history_size = bridges_possible ? SIZE_BRIDGE : SIZE_CONTACT;
+    auto cmd = fmt::format("{} all NEIGH_HISTORY {}", history_id(history_size), history_size);
+    fix_history = dynamic_cast<FixNeighHistory *>(modify->replace_fix(
+        "NEIGH_HISTORY_CAPILLARY_DUMMY" + std::to_string(instance_me), cmd, 1));
+    fix_history->pair = this;
+  }
+  fix_history =
+      dynamic_cast<FixNeighHistory *>(modify->get_fix_by_id(history_id(history_size)));
+  if (!fix_history) error->all(FLERR, "Pair gran/capillary: could not find its NEIGH_HISTORY fix");
+  if (bridges_possible && history_size == SIZE_CONTACT) widen_history();
+}
+
+/* ----------------------------------------------------------------------
+   contact layout -> bridge layout, between two runs: a NEIGH_HISTORY fix of the bridge
+   layout replaces the contact one and takes every pair's tangential displacement, its
+   bridge values zero (no pair held a bridge).  The values go through the fixes' own
+   per-atom exchange packing (pack_exchange, unpack_exchange), whose per-atom partner
+   arrays hold the history between runs (FixNeighHistory::post_run); this rank's atoms only,
+   as an atom migration would move them.
+------------------------------------------------------------------------- */
+
+void PairGranCapillary::widen_history()
+{
+  const int nlocal = atom->nlocal;
+  const int maxpartner = fix_history->get_maxpartner();
+  std::vector<double> narrow(1 + (1 + SIZE_CONTACT) * maxpartner);
+  std::vector<double> wide;
+  std::vector<std::vector<double>> packed(nlocal);
+  for (int i = 0; i < nlocal; i++) {
+    const int length = fix_history->pack_exchange(i, narrow.data());
+    const int npartner = static_cast<int>(narrow[0]);
+    wide.assign(1 + (1 + SIZE_BRIDGE) * npartner, 0.0);
+    wide[0] = narrow[0];
+    for (int n = 0; n < npartner; n++) {
+      const double *from = &narrow[1 + (1 + SIZE_CONTACT) * n];
+      double *to = &wide[1 + (1 + SIZE_BRIDGE) * n];
+      for (int k = 0; k < 1 + SIZE_CONTACT; k++) to[k] = from[k];    // partner tag, shear
+    }
+    if (length != 1 + (1 + SIZE_CONTACT) * npartner)
+      error->one(FLERR, "pair gran/capillary: atom {} has a pair history of {} values, not "
+                 "the {} of its {} partners", atom->tag[i], length,
+                 1 + (1 + SIZE_CONTACT) * npartner, npartner);
+    packed[i] = wide;
+  }
+
+  auto cmd = fmt::format("{} all NEIGH_HISTORY {}", history_id(SIZE_BRIDGE), (int) SIZE_BRIDGE);
+  fix_history = dynamic_cast<FixNeighHistory *>(
+      modify->replace_fix(history_id(SIZE_CONTACT), cmd, 1));
+  fix_history->pair = this;
+  history_size = SIZE_BRIDGE;
+  fix_history->init();    // its partner pages, which unpack_exchange fills
+  for (int i = 0; i < nlocal; i++) fix_history->unpack_exchange(i, packed[i].data());
+  // an atom may change ranks at the setup before the fix's first pre_exchange sizes this
+  fix_history->maxexchange = (1 + SIZE_BRIDGE) * maxpartner + 1;
 }
 
 /* ----------------------------------------------------------------------
@@ -656,7 +724,8 @@ void PairGranCapillary::transfer_history(double *source, double *target, int /*i
                                          int /*jtype*/)
 {
   for (int k = 0; k < 3; k++) target[HIST_SHEAR + k] = -source[HIST_SHEAR + k];
-  for (int k = 0; k < CB_BRIDGE_DOUBLES; k++) target[HIST_BRIDGE + k] = source[HIST_BRIDGE + k];
+  if (history_size == SIZE_BRIDGE)
+    for (int k = 0; k < CB_BRIDGE_DOUBLES; k++) target[HIST_BRIDGE + k] = source[HIST_BRIDGE + k];
 }
 
 /* ----------------------------------------------------------------------
@@ -718,7 +787,7 @@ void PairGranCapillary::compute(int eflag, int vflag)
   if (neighbor->ago == 0) check_timestep();    // at setup and after every re-neighboring
   if (update->setupflag) derive_bridges();
 
-  if (liquid_mode == LIQUID_PROTOCOL2 || liquid_mode == LIQUID_PROTOCOL3) {
+  if (bridges_possible && (liquid_mode == LIQUID_PROTOCOL2 || liquid_mode == LIQUID_PROTOCOL3)) {
     update_bridges();
     exchange_liquid();
   }
@@ -739,6 +808,7 @@ void PairGranCapillary::compute(int eflag, int vflag)
 
 void PairGranCapillary::derive_bridges()
 {
+  if (history_size != SIZE_BRIDGE) return;    // no pair has held a bridge
   double *radius = atom->radius;
   int *type = atom->type;
   int **firsttouch = fix_history->firstflag;
@@ -748,7 +818,7 @@ void PairGranCapillary::derive_bridges()
     int *jlist = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       if (firsttouch[i][jj] == 0) continue;    // flagged 0: no bridge (see pair_force)
-      cb_bridge *bridge = bridge_of(&firstvalue[i][SIZE_HISTORY * jj]);
+      cb_bridge *bridge = bridge_of(&firstvalue[i][SIZE_BRIDGE * jj]);
       if (bridge->active == 0.0) continue;
       const int j = jlist[jj] & NEIGHMASK;
       // Every volume set to 0 since the bridge formed: the size neighbor list of a scene
@@ -828,7 +898,7 @@ void PairGranCapillary::update_bridges()
       // candidate (bridges form at contact)
       if (touch[jj] == 0 && cb_certainly_apart(rsq, radsum)) continue;
       const int jtype = type[j];
-      double *history = &allhistory[SIZE_HISTORY * jj];
+      double *history = &allhistory[SIZE_BRIDGE * jj];
       cb_bridge *bridge = bridge_of(history);
       const double r = sqrt(rsq);
       const double gap = r - radsum;
@@ -953,6 +1023,8 @@ template <bool BRIDGES> void PairGranCapillary::form_bridges_and_forces()
   double *special = force->special_lj;
   const int per_atom = liquid_mode == LIQUID_PROTOCOL2 || liquid_mode == LIQUID_PROTOCOL3;
   const int protocol3 = liquid_mode == LIQUID_PROTOCOL3;
+  // (a run that can hold bridges has the bridge layout: create_history)
+  const int stride = BRIDGES ? static_cast<int>(SIZE_BRIDGE) : history_size;
 
   const int inum = list->inum;
   int *ilist = list->ilist;
@@ -981,7 +1053,7 @@ template <bool BRIDGES> void PairGranCapillary::form_bridges_and_forces()
       // and no bridge can form (only at contact).  Its history is all zero (see
       // pair_force), so it is neither read nor written: no square root, no core call.
       if (touch[jj] == 0 && cb_certainly_apart(rsq, radsum)) continue;
-      double *history = &allhistory[SIZE_HISTORY * jj];
+      double *history = &allhistory[stride * jj];
       cb_bridge *bridge = bridge_of(history);
       const int jtype = type[j];
       const double r = sqrt(rsq);
@@ -1205,14 +1277,14 @@ void PairGranCapillary::check_timestep()
   double *vlo = mass_lo + n + 1, *minus_vhi = vlo + np;
   for (int i = 0; i < atom->nlocal; i++)
     mass_lo[atom->type[i]] = MIN(mass_lo[atom->type[i]], atom->rmass[i]);
-  if (liquid_mode != LIQUID_FIXED && fix_history && list) {
+  if (liquid_mode != LIQUID_FIXED && history_size == SIZE_BRIDGE && fix_history && list) {
     int *type = atom->type;
     for (int ii = 0; ii < list->inum; ii++) {
       const int i = list->ilist[ii];
       double *allhistory = fix_history->firstvalue[i];
       for (int jj = 0; jj < list->numneigh[i]; jj++) {
         const int j = list->firstneigh[i][jj] & NEIGHMASK;
-        cb_bridge *bridge = bridge_of(&allhistory[SIZE_HISTORY * jj]);
+        cb_bridge *bridge = bridge_of(&allhistory[SIZE_BRIDGE * jj]);
         if (bridge->active == 0.0) continue;
         const int a = MIN(type[i], type[j]), b = MAX(type[i], type[j]);
         vlo[a * (n + 1) + b] = MIN(vlo[a * (n + 1) + b], bridge->volume);
@@ -1344,7 +1416,8 @@ double *PairGranCapillary::find_history(int i, int j, double *negate)
   for (int k = 0; k < jnum; k++) {
     neighprev++;
     if (neighprev >= jnum) neighprev = 0;
-    if ((jlist[neighprev] & NEIGHMASK) == j) return &fix_history->firstvalue[i][SIZE_HISTORY * neighprev];
+    if ((jlist[neighprev] & NEIGHMASK) == j)
+      return &fix_history->firstvalue[i][history_size * neighprev];
   }
   if (j < atom->nlocal) {
     jnum = list->numneigh[j];
@@ -1352,7 +1425,7 @@ double *PairGranCapillary::find_history(int i, int j, double *negate)
     for (int k = 0; k < jnum; k++)
       if ((jlist[k] & NEIGHMASK) == i) {
         *negate = -1.0;
-        return &fix_history->firstvalue[j][SIZE_HISTORY * k];
+        return &fix_history->firstvalue[j][history_size * k];
       }
   }
   return nullptr;
@@ -1371,7 +1444,7 @@ double PairGranCapillary::single(int i, int j, int itype, int jtype, double rsq,
   double *history = find_history(i, j, &negate);
 
   double vol = 0.0, active = 0.0, capillary = 0.0;
-  if (history) {
+  if (history && history_size == SIZE_BRIDGE) {
     cb_bridge *bridge = bridge_of(history);
     active = bridge->active;
     vol = bridge->volume;
@@ -1424,13 +1497,13 @@ double PairGranCapillary::single(int i, int j, int itype, int jtype, double rsq,
 void PairGranCapillary::census(double *out)
 {
   double bridges = 0.0, liquid = 0.0;
-  if (fix_history && list && fix_history->firstvalue) {
+  if (history_size == SIZE_BRIDGE && fix_history && list && fix_history->firstvalue) {
     for (int ii = 0; ii < list->inum; ii++) {
       const int i = list->ilist[ii];
       double *allhistory = fix_history->firstvalue[i];
       for (int jj = 0; jj < list->numneigh[i]; jj++) {
         const int j = list->firstneigh[i][jj] & NEIGHMASK;
-        cb_bridge *bridge = bridge_of(&allhistory[SIZE_HISTORY * jj]);
+        cb_bridge *bridge = bridge_of(&allhistory[SIZE_BRIDGE * jj]);
         if (bridge->active == 0.0 || !counted(i, j)) continue;
         bridges += 1.0;
         liquid += bridge->volume;
@@ -1592,7 +1665,7 @@ int PairGranCapillary::protocol1(double total_liquid, double &alpha, double &lar
   for (int k = 0; k < nmine; k++) {
     const int i = where[k].first, jj = where[k].second;
     const int j = list->firstneigh[i][jj] & NEIGHMASK;
-    double *history = &firstvalue[i][SIZE_HISTORY * jj];
+    double *history = &firstvalue[i][SIZE_BRIDGE * jj];    // wet pairs: the bridge layout
     cb_bridge *bridge = bridge_of(history);
     const int was = bridge->active != 0.0;
     const double gap = geometry[3 * k + 2];
@@ -1667,10 +1740,9 @@ void PairGranCapillary::read_restart(FILE *fp)
 
 void PairGranCapillary::write_restart_settings(FILE *fp)
 {
-  // first the number of values a pair's history holds: FixNeighHistory stores them without
-  // it, and reads them with the current build's count, so a file of a build with another
-  // layout would be misread (bridges shifted into other pairs' values) rather than refused
-  const int history_size = SIZE_HISTORY;
+  // first the number of values a pair's history holds (its layout): FixNeighHistory stores
+  // them without it, and reads them with the count of the fix it restores into, so a file
+  // of another layout would be misread (bridges shifted into other pairs' values)
   fwrite(&history_size, sizeof(int), 1, fp);
   fwrite(&friction_wet, sizeof(int), 1, fp);
   fwrite(&dashpot_floor, sizeof(double), 1, fp);
@@ -1679,17 +1751,18 @@ void PairGranCapillary::write_restart_settings(FILE *fp)
 void PairGranCapillary::read_restart_settings(FILE *fp)
 {
   if (comm->me == 0) {
-    int history_size = 0;
     utils::sfread(FLERR, &history_size, sizeof(int), 1, fp, nullptr, error);
     // (files of builds before this check start with the friction setting, 0 or 1)
-    if (history_size != SIZE_HISTORY)
+    if (history_size != SIZE_CONTACT && history_size != SIZE_BRIDGE)
       error->one(FLERR, "pair gran/capillary: this restart file was written by a build whose "
                  "pair history is laid out otherwise (read {} where this build writes {} "
-                 "values a pair): its bridges cannot be read; write it again with the build "
-                 "that made it, or start from a data file", history_size, (int) SIZE_HISTORY);
+                 "values a pair, or {} with no liquid): its bridges cannot be read; write it "
+                 "again with the build that made it, or start from a data file", history_size,
+                 (int) SIZE_BRIDGE, (int) SIZE_CONTACT);
     utils::sfread(FLERR, &friction_wet, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &dashpot_floor, sizeof(double), 1, fp, nullptr, error);
   }
+  MPI_Bcast(&history_size, 1, MPI_INT, 0, world);
   MPI_Bcast(&friction_wet, 1, MPI_INT, 0, world);
   MPI_Bcast(&dashpot_floor, 1, MPI_DOUBLE, 0, world);
 }

@@ -35,7 +35,9 @@ class PairGranCapillary : public Pair {
   //   [3..9] the pair's cb_bridge, copied: volume [m^3], active (1.0 / 0.0), and the
   //          constants the core derives from them (rupture distance, force at contact, the
   //          radii they are for, richefeu's 1/lambda).
-  enum { HIST_SHEAR = 0, HIST_BRIDGE = 3, SIZE_HISTORY = 3 + CB_BRIDGE_DOUBLES };
+  // A style whose first run cannot hold a bridge keeps the contact layout, [0..2] alone
+  // (SIZE_CONTACT); the first run that can hold one widens it (widen_history).
+  enum { HIST_SHEAR = 0, HIST_BRIDGE = 3, SIZE_CONTACT = 3, SIZE_BRIDGE = 3 + CB_BRIDGE_DOUBLES };
   // How bridges get their liquid.
   enum { LIQUID_FIXED = 0, LIQUID_PROTOCOL1, LIQUID_PROTOCOL2, LIQUID_PROTOCOL3 };
   // Values of single() in svector (compute pair/local p1 ... p8).
@@ -139,6 +141,7 @@ class PairGranCapillary : public Pair {
 
   class FixDummy *fix_dummy;
   class FixNeighHistory *fix_history;
+  int history_size;    // SIZE_CONTACT or SIZE_BRIDGE: fix_history's values a pair (0: no fix yet)
   FixCapillaryLiquid *fix_liquid;
   int liquid_mode, liquid_groupbit;
   int bridges_possible;    // 0: no type pair can hold a bridge in this run (init_style)
@@ -172,6 +175,9 @@ class PairGranCapillary : public Pair {
   }
   [[noreturn]] void fail_cb(int status, const char *what, int itype, int jtype, double r1,
                             double r2, double vol, double gap);
+  std::string history_id(int size) const;
+  void create_history();
+  void widen_history();
   void derive_bridges();
   void update_bridges();
   // BRIDGES false: a run in which no type pair can hold a bridge (bridges_possible 0)

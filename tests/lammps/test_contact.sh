@@ -7,6 +7,8 @@
 #    'dashpot both', against the analytic values, and again from a restart file;
 #  - the bridge's stored constants follow the coefficients (pair_coeff between two runs)
 #    and the radii (a sphere growing under fix adapt): its force against the CLI's;
+#  - the pair history of a dry first run widens for a wet one, the tangential spring kept
+#    (1 and 2 ranks, and through a restart file);
 #  - a bridge larger than the reach is built for ruptures at the reach, with a warning;
 #  - the neighbor reach: LAMMPS's neighbor cutoff is r1 + r2 + the rupture distance of
 #    the bridge volume in use (fixed: the pair_coeff volume; a protocol: vmax) + skin.
@@ -84,6 +86,38 @@ if lmp 1 "$log" -in "$DECKS/in.rederive" -var gamma1 0.0728 -var gamma2 0.05 -va
     done
 else
     fail "rederive: LAMMPS failed: $(grep -h -m1 ERROR "$log"*)"
+fi
+
+# the pair history's layout: a first run with no liquid keeps the tangential displacement
+# alone (fix NEIGH_HISTORY_CAPILLARY_CONTACT0, 3 values a pair); the run that adds a volume
+# widens it (NEIGH_HISTORY_CAPILLARY0, 10).  The spring loads on across the two runs:
+# k_t |v| t = 100 * 0.01 * 100e-6 at step 100 (half that had it been lost), the bridge
+# forms with 2 pi gamma R; on 1 rank, on 2 (the pair spans them), and through a restart
+# file of the dry run
+layout() {
+    label=$1 np=$2 expected=$3
+    shift 3
+    log="$TMP/layout_$label.log"
+    lmp "$np" "$log" -in "$DECKS/in.layout" "$@" >/dev/null 2>&1 ||
+        { fail "layout $label: LAMMPS failed: $(grep -h -m1 ERROR "$log"*)"; return; }
+    thermo "$log" >"$TMP/rows"
+    close_rel "layout $label: tangential force at step 100" \
+        "$(awk '$1 == 100 { print $3 }' "$TMP/rows")" 1e-4 1e-12
+    close_rel "layout $label: capillary force at step 100" \
+        "$(awk '$1 == 100 { print $2 }' "$TMP/rows")" "$FCAP" 1e-12
+    checks=$((checks + 1))
+    [ "$(sed -n 's/^Fix\[ *0\]: *\([A-Z_0-9]*\),.*/\1/p' "$log" | tr '\n' ' ')" = "$expected" ] ||
+        fail "layout $label: history fixes '$(sed -n 's/^Fix\[ *0\]: *\([A-Z_0-9]*\),.*/\1/p' "$log" | tr '\n' ' ')', expected '$expected'"
+    echo "layout $label: step 100 $(awk '$1 == 100' "$TMP/rows")"
+}
+layout one_rank 1 "NEIGH_HISTORY_CAPILLARY_CONTACT0 NEIGH_HISTORY_CAPILLARY0 "
+layout two_ranks 2 "NEIGH_HISTORY_CAPILLARY_CONTACT0 NEIGH_HISTORY_CAPILLARY0 "
+restart="$TMP/layout.restart"
+if lmp 1 "$TMP/layout_write.log" -in "$DECKS/in.layout" -var stage write \
+    -var restart_file "$restart" >/dev/null 2>&1; then
+    layout restart 1 "NEIGH_HISTORY_CAPILLARY0 " -var stage read -var restart_file "$restart"
+else
+    fail "layout, restart: LAMMPS failed: $(grep -h -m1 ERROR "$TMP/layout_write.log"*)"
 fi
 
 # a bridge larger than the reach is built for (the volume lowered between two runs) is
