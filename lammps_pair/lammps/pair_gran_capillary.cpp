@@ -1019,10 +1019,8 @@ template <bool BRIDGES> void PairGranCapillary::form_bridges_and_forces()
   double **x = a.x;
   double *radius = a.radius;
   int *type = atom->type;
-  tagint *tag = atom->tag;
   double *special = force->special_lj;
   const int per_atom = liquid_mode == LIQUID_PROTOCOL2 || liquid_mode == LIQUID_PROTOCOL3;
-  const int protocol3 = liquid_mode == LIQUID_PROTOCOL3;
   // (a run that can hold bridges has the bridge layout: create_history)
   const int stride = BRIDGES ? static_cast<int>(SIZE_BRIDGE) : history_size;
 
@@ -1063,76 +1061,110 @@ template <bool BRIDGES> void PairGranCapillary::form_bridges_and_forces()
       double capillary = 0.0;
       // (a run in which no type pair can hold a bridge: the contact forces alone)
       if (BRIDGES) {
-        if (per_atom) {
-          // the bridges were advanced in update_bridges(): here they form, or give their force
-          if (bridge->active == 0.0) {
-            if (gap <= 0.0 && wet_pair(i, j, tp)) {
-              double offer_i = offer[i], offer_j = offer[j], available = 0.0;
-              int status = cb_protocol2_take(&offer_i, &offer_j, &available);
-              check_cb(status, "liquid take", itype, jtype, radius[i], radius[j], available, gap);
-              if (available > 0.0) {
-                cb_transition transition;
-                double none = 0.0;
-                status = cb_bridge_step(pair_law, radius[i], radius[j], gap, available, bridge,
-                                        &transition, &none, &capillary);
-                check_cb(status, "bridge formation", itype, jtype, radius[i], radius[j],
-                         available, gap);
-                if (transition == CB_BRIDGE_FORMED && counted(i, j)) n_formed += 1.0;
-              }
-            }
-          } else {
-            if (protocol3) {
-              double deposited = 0.0;
-              if (deposit[i] > 0.0 && best_partner[i] == tag[j]) deposited += deposit[i];
-              if (deposit[j] > 0.0 && best_partner[j] == tag[i]) deposited += deposit[j];
-              if (deposited > 0.0) {
-                const double grown = bridge->volume + deposited;
-                int status = cb_bridge_set_volume(pair_law, radius[i], radius[j], grown, bridge);
-                check_cb(status, "Protocol 3 deposit", itype, jtype, radius[i], radius[j], grown,
-                         gap);
-              }
-            }
-            int status = cb_bridge_force(pair_law, radius[i], radius[j], gap, bridge, &capillary);
-            check_cb(status, "capillary force", itype, jtype, radius[i], radius[j],
-                     bridge->volume, gap);
-          }
-        } else if (rsq < tp.cutsq &&
-                   cb_bridge_held(pair_law, radius[i], radius[j], gap, bridge, &capillary)) {
-          // the common case, a bridge held (in contact, or a richefeu bridge stretched within
-          // its rupture distance): its force from the stored constants, inline.  (Within the
-          // reach: one held beyond it is ruptured below.)
-        } else if (bridge->active != 0.0 ||
-                   (tp.formation_volume > 0.0 && wet_pair(i, j, tp))) {
-          // a bridge to advance, or one to form (dry pairs that cannot get one skip the core)
-          const double available = bridge->active != 0.0 ? 0.0 : tp.formation_volume;
-          double vol = 0.0;
-          cb_transition transition;
-          const double before = bridge->volume;
-          int status = cb_bridge_step(pair_law, radius[i], radius[j], gap, available, bridge,
-                                      &transition, &vol, &capillary);
-          check_cb(status, "bridge update", itype, jtype, radius[i], radius[j],
-                   bridge->active != 0.0 ? bridge->volume : MAX(before, available), gap);
-          if (transition == CB_BRIDGE_FORMED && counted(i, j)) n_formed += 1.0;
-          if (transition == CB_BRIDGE_RUPTURED && counted(i, j)) n_ruptured += 1.0;
-          if (transition != CB_BRIDGE_RUPTURED) vol = 0.0;
-          if (bridge->active != 0.0 && rsq >= tp.cutsq) {
-            // held beyond the reach (a volume above the one the reach was built for):
-            // ruptured here, before the pair leaves the neighbor list with its liquid
-            vol = bridge->volume;
-            *bridge = cb_bridge{};
-            capillary = 0.0;
-            if (counted(i, j)) {
-              n_reach += 1.0;
-              n_ruptured += 1.0;
-            }
-          }
-          if (vol > 0.0 && liquid_mode == LIQUID_PROTOCOL1 && counted(i, j)) pool_released += vol;
-        }
+        // The common case, a bridge held (in contact, or a richefeu bridge stretched within
+        // its rupture distance), gives its force from the stored constants, inline (within
+        // the reach: one held beyond it is ruptured by advance_bridge).  The rest is out of
+        // line: inlined, it made the compiler spill the contact force code's values, ~3 %
+        // more instructions and time in the wet loop (bench/README.md).  Dry pairs that
+        // cannot get a bridge skip both.
+        if (per_atom)
+          capillary = protocol_bridge(i, j, gap, tp, bridge);
+        else if (!(rsq < tp.cutsq &&
+                   cb_bridge_held(pair_law, radius[i], radius[j], gap, bridge, &capillary)) &&
+                 (bridge->active != 0.0 || (tp.formation_volume > 0.0 && wet_pair(i, j, tp))))
+          capillary = advance_bridge(i, j, rsq, gap, tp, bridge);
       }
       pair_force<BRIDGES>(a, tp, i, j, delx, dely, delz, rsq, r, gap, capillary, history,
                           touch[jj], history_update);
     }
   }
+}
+
+/* ----------------------------------------------------------------------
+   Protocols 2, 3: the bridges were advanced in update_bridges(); here a dry pair in
+   contact forms one with the liquid on offer, a bridge takes its Protocol 3 deposit, and
+   the capillary force is returned
+------------------------------------------------------------------------- */
+
+double PairGranCapillary::protocol_bridge(int i, int j, double gap, const TypePair &tp,
+                                          cb_bridge *bridge)
+{
+  double *radius = atom->radius;
+  tagint *tag = atom->tag;
+  const int itype = atom->type[i], jtype = atom->type[j];
+  const cb_law *pair_law = tp.law;
+  const int protocol3 = liquid_mode == LIQUID_PROTOCOL3;
+  double capillary = 0.0;
+  if (bridge->active == 0.0) {
+    if (gap <= 0.0 && wet_pair(i, j, tp)) {
+      double offer_i = offer[i], offer_j = offer[j], available = 0.0;
+      int status = cb_protocol2_take(&offer_i, &offer_j, &available);
+      check_cb(status, "liquid take", itype, jtype, radius[i], radius[j], available, gap);
+      if (available > 0.0) {
+        cb_transition transition;
+        double none = 0.0;
+        status = cb_bridge_step(pair_law, radius[i], radius[j], gap, available, bridge,
+                                &transition, &none, &capillary);
+        check_cb(status, "bridge formation", itype, jtype, radius[i], radius[j],
+                 available, gap);
+        if (transition == CB_BRIDGE_FORMED && counted(i, j)) n_formed += 1.0;
+      }
+    }
+  } else {
+    if (protocol3) {
+      double deposited = 0.0;
+      if (deposit[i] > 0.0 && best_partner[i] == tag[j]) deposited += deposit[i];
+      if (deposit[j] > 0.0 && best_partner[j] == tag[i]) deposited += deposit[j];
+      if (deposited > 0.0) {
+        const double grown = bridge->volume + deposited;
+        int status = cb_bridge_set_volume(pair_law, radius[i], radius[j], grown, bridge);
+        check_cb(status, "Protocol 3 deposit", itype, jtype, radius[i], radius[j], grown,
+                 gap);
+      }
+    }
+    int status = cb_bridge_force(pair_law, radius[i], radius[j], gap, bridge, &capillary);
+    check_cb(status, "capillary force", itype, jtype, radius[i], radius[j],
+             bridge->volume, gap);
+  }
+  return capillary;
+}
+
+/* ----------------------------------------------------------------------
+   liquid fixed or Protocol 1: a bridge to advance (held, or ruptured), or one to form;
+   returns the capillary force of its new state
+------------------------------------------------------------------------- */
+
+double PairGranCapillary::advance_bridge(int i, int j, double rsq, double gap,
+                                         const TypePair &tp, cb_bridge *bridge)
+{
+  double *radius = atom->radius;
+  const int itype = atom->type[i], jtype = atom->type[j];
+  const cb_law *pair_law = tp.law;
+  double capillary = 0.0;
+  const double available = bridge->active != 0.0 ? 0.0 : tp.formation_volume;
+  double vol = 0.0;
+  cb_transition transition;
+  const double before = bridge->volume;
+  int status = cb_bridge_step(pair_law, radius[i], radius[j], gap, available, bridge,
+                              &transition, &vol, &capillary);
+  check_cb(status, "bridge update", itype, jtype, radius[i], radius[j],
+           bridge->active != 0.0 ? bridge->volume : MAX(before, available), gap);
+  if (transition == CB_BRIDGE_FORMED && counted(i, j)) n_formed += 1.0;
+  if (transition == CB_BRIDGE_RUPTURED && counted(i, j)) n_ruptured += 1.0;
+  if (transition != CB_BRIDGE_RUPTURED) vol = 0.0;
+  if (bridge->active != 0.0 && rsq >= tp.cutsq) {
+    // held beyond the reach (a volume above the one the reach was built for):
+    // ruptured here, before the pair leaves the neighbor list with its liquid
+    vol = bridge->volume;
+    *bridge = cb_bridge{};
+    capillary = 0.0;
+    if (counted(i, j)) {
+      n_reach += 1.0;
+      n_ruptured += 1.0;
+    }
+  }
+  if (vol > 0.0 && liquid_mode == LIQUID_PROTOCOL1 && counted(i, j)) pool_released += vol;
+  return capillary;
 }
 
 /* ----------------------------------------------------------------------

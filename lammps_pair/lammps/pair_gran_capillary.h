@@ -178,6 +178,12 @@ class PairGranCapillary : public Pair {
   std::string history_id(int size) const;
   void create_history();
   void widen_history();
+  // the bridge work of the wet pair loop beside the inline cb_bridge_held (out of line on
+  // purpose, see form_bridges_and_forces)
+  __attribute__((noinline)) double protocol_bridge(int i, int j, double gap, const TypePair &tp,
+                                                   cb_bridge *bridge);
+  __attribute__((noinline)) double advance_bridge(int i, int j, double rsq, double gap,
+                                                  const TypePair &tp, cb_bridge *bridge);
   void derive_bridges();
   void update_bridges();
   // BRIDGES false: a run in which no type pair can hold a bridge (bridges_possible 0)
