@@ -234,6 +234,7 @@ void PairGranCapillary::allocate()
   rad_min = new double[n + 1];
   rad_max = new double[n + 1];
   for (int i = 0; i <= n; i++) rad_min[i] = rad_max[i] = 0.0;
+  held_volume.assign(n + 1, 0.0);
   coeff_text.assign((size_t) (n + 1) * (n + 1), std::string());
 }
 
@@ -467,20 +468,23 @@ void PairGranCapillary::init_style()
 
   // The neighbor list. With liquid: a plain half list reaching the type-pair cutoff
   // (init_one), since bridges act beyond contact and the list must hold every pair up to
-  // the largest rupture distance. Without (no type pair can hold a bridge): the per-pair
-  // size list of LAMMPS's dry granular styles, cut at R_i + R_j + skin, so that a dry scene
-  // pays for its contacts only.
+  // the largest rupture distance. Without (no type pair can form a bridge and none holds
+  // one): the per-pair size list of LAMMPS's dry granular styles, cut at R_i + R_j + skin,
+  // so that a dry scene pays for its contacts only.
   bridges_possible = 0;
   for (int i = 1; i <= n; i++)
     for (int j = i; j <= n; j++)
       if (setflag[i][j] &&
           (liquid_mode == LIQUID_FIXED ? design_volume(i, j) > 0.0 : volume[i][j] != 0.0))
         bridges_possible = 1;
+  create_history();
+  held_volumes();
+  for (int i = 1; i <= n; i++)
+    if (held_volume[i] > 0.0) bridges_possible = 1;
   if (bridges_possible)
     neighbor->add_request(this, NeighConst::REQ_HISTORY);
   else
     neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_HISTORY);
-  create_history();
 
   // per-atom liquid exchange within a force evaluation (Protocols 2, 3)
   if (liquid_mode == LIQUID_PROTOCOL2 || liquid_mode == LIQUID_PROTOCOL3) {
@@ -568,6 +572,38 @@ void PairGranCapillary::widen_history()
   for (int i = 0; i < nlocal; i++) fix_history->unpack_exchange(i, packed[i].data());
   // an atom may change ranks at the setup before the fix's first pre_exchange sizes this
   fix_history->maxexchange = (1 + SIZE_BRIDGE) * maxpartner + 1;
+}
+
+/* ----------------------------------------------------------------------
+   the largest volume of the bridges that exist, per type of the atoms holding them, over
+   all ranks (held_volume[type]).  The next run's reach covers them (init_one): a volume
+   lowered between two runs applies to new bridges, and a bridge of the old volume keeps
+   its own rupture distance.  Were the reach built for the new volume only, the neighbor
+   list of the setup would drop such a bridge, and its liquid, if it is already stretched
+   beyond the new cutoff plus the skin.  Read from the pair history as it stands between
+   runs, the fix's per-atom partner arrays (FixNeighHistory::post_run), through its
+   exchange packing; a bridge is recorded on both of its atoms.
+------------------------------------------------------------------------- */
+
+void PairGranCapillary::held_volumes()
+{
+  const int n = atom->ntypes;
+  std::vector<double> local(n + 1, 0.0);
+  held_volume.assign(n + 1, 0.0);
+  if (history_size == SIZE_BRIDGE) {
+    int *type = atom->type;
+    std::vector<double> packed(1 + (1 + SIZE_BRIDGE) * fix_history->get_maxpartner());
+    for (int i = 0; i < atom->nlocal; i++) {
+      fix_history->pack_exchange(i, packed.data());
+      const int npartner = static_cast<int>(packed[0]);
+      for (int p = 0; p < npartner; p++) {
+        // a partner's entry: its tag, then its SIZE_BRIDGE values
+        const cb_bridge *bridge = bridge_of(&packed[1 + (1 + SIZE_BRIDGE) * p + 1]);
+        if (bridge->active != 0.0) local[type[i]] = MAX(local[type[i]], bridge->volume);
+      }
+    }
+  }
+  MPI_Allreduce(local.data(), held_volume.data(), n + 1, MPI_DOUBLE, MPI_MAX, world);
 }
 
 /* ----------------------------------------------------------------------
@@ -663,8 +699,12 @@ double PairGranCapillary::init_one(int i, int j)
     if (rj <= 0.0) rj = rmax;
   }
   double reach = 0.0;
-  if (rad_max[i] > 0.0 && rad_max[j] > 0.0)
-    reach = max_rupture(i, j, design_volume(i, j)) * (1.0 + REACH_MARGIN);
+  if (rad_max[i] > 0.0 && rad_max[j] > 0.0) {
+    // the design volume, or a larger bridge that exists (held_volumes)
+    const double reach_volume =
+        MAX(design_volume(i, j), MAX(held_volume[i], held_volume[j]));
+    reach = max_rupture(i, j, reach_volume) * (1.0 + REACH_MARGIN);
+  }
   double cut = ri + rj + reach;
 
   // mirror the symmetric coefficients
@@ -821,14 +861,6 @@ void PairGranCapillary::derive_bridges()
       cb_bridge *bridge = bridge_of(&firstvalue[i][SIZE_BRIDGE * jj]);
       if (bridge->active == 0.0) continue;
       const int j = jlist[jj] & NEIGHMASK;
-      // Every volume set to 0 since the bridge formed: the size neighbor list of a scene
-      // without bridges would drop it, and its liquid, at the next re-neighboring.  (Bridges
-      // beyond contact + skin have left the list already; those in contact are found here.)
-      if (!bridges_possible)
-        error->one(FLERR, "pair gran/capillary: atoms {} and {} hold a bridge of {} m^3, but "
-                   "no type pair can hold one in this run (every volume is 0): its liquid "
-                   "would be lost; keep the volume of the wet type pairs > 0",
-                   atom->tag[i], atom->tag[j], bridge->volume);
       const int status = cb_bridge_set_volume(law(type[i], type[j]), radius[i], radius[j],
                                               bridge->volume, bridge);
       // (a corrupted history: CB_ERR_BRIDGE_STATE, which says so; a restart file of a

@@ -145,6 +145,7 @@ class PairGranCapillary : public Pair {
   FixCapillaryLiquid *fix_liquid;
   int liquid_mode, liquid_groupbit;
   int bridges_possible;    // 0: no type pair can hold a bridge in this run (init_style)
+  std::vector<double> held_volume;    // per type: the largest bridge that exists (init_style)
 
   // per-atom scratch of one force evaluation (owned + ghost), Protocols 2 and 3
   int nmax_scratch;
@@ -178,6 +179,7 @@ class PairGranCapillary : public Pair {
   std::string history_id(int size) const;
   void create_history();
   void widen_history();
+  void held_volumes();
   // the bridge work of the wet pair loop beside the inline cb_bridge_held (out of line on
   // purpose, see form_bridges_and_forces)
   __attribute__((noinline)) double protocol_bridge(int i, int j, double gap, const TypePair &tp,

@@ -9,7 +9,8 @@
 #    and the radii (a sphere growing under fix adapt): its force against the CLI's;
 #  - the pair history of a dry first run widens for a wet one, the tangential spring kept
 #    (1 and 2 ranks, and through a restart file);
-#  - a bridge larger than the reach is built for ruptures at the reach, with a warning;
+#  - a bridge keeps its own rupture distance when the volume is lowered between runs (the
+#    reach covers the bridges that exist);
 #  - the neighbor reach: LAMMPS's neighbor cutoff is r1 + r2 + the rupture distance of
 #    the bridge volume in use (fixed: the pair_coeff volume; a protocol: vmax) + skin.
 . "$(dirname "$0")/lib.sh" "$@"
@@ -120,28 +121,31 @@ else
     fail "layout, restart: LAMMPS failed: $(grep -h -m1 ERROR "$TMP/layout_write.log"*)"
 fi
 
-# a bridge larger than the reach is built for (the volume lowered between two runs) is
-# ruptured at the reach, before the pair leaves the neighbor list with its liquid: held by
-# its own rupture distance, (1e-11)^(1/3) = 215 um, it would last until re-neighboring
-# dropped it.  Sphere 2 moves 1 um a step from contact; reach gap (1e-13)^(1/3) = 46.4 um.
-log="$TMP/reach_rupture.log"
-if lmp 1 "$log" -in "$DECKS/in.reach" -var small 1e-13 >/dev/null 2>&1; then
-    thermo "$log" >"$TMP/rows"
-    # the first step i whose centre distance 2 mm + i um reaches the cutoff
-    expected=$(awk 'BEGIN { cut = 2e-3 + exp(log(1e-13) / 3)
-        for (i = 1; (2e-3 + i * 1e-6) < cut; i++); print i }')
-    got=$(awk 'NF == 3 && $2 == 0 { print $1; exit }' "$TMP/rows")
-    ruptured=$(awk -v s="$got" '$1 == s { print $3 }' "$TMP/rows")
-    checks=$((checks + 1))
-    [ "$got" = "$expected" ] && [ "$ruptured" = 1 ] ||
-        fail "reach rupture: the bridge went at step '$got' (ruptured '$ruptured'), expected step $expected (1 ruptured)"
-    checks=$((checks + 1))
-    grep -q "1 bridge(s) ruptured at the neighbor reach" "$log.screen" ||
-        fail "reach rupture: no warning of a bridge ruptured at the neighbor reach"
-    echo "reach rupture: the bridge of 1e-11 m^3 ruptured at step $got (cutoff for 1e-13 m^3: step $expected)"
-else
-    fail "reach rupture: LAMMPS failed: $(grep -h -m1 ERROR "$log"*)"
-fi
+# a volume changed between two runs applies to new bridges: a bridge of 1e-11 m^3 keeps its
+# own rupture distance, (1e-11)^(1/3) = 215.4 um (sphere 2 moves 1 um a step from contact),
+# whatever the new volume makes of the neighbor reach: lowered to 1e-13 (reach 46 um + skin)
+# while in contact or when already stretched to 180 um (beyond the new reach plus the skin,
+# where the setup's neighbor list had dropped it with its liquid), or to 0 (no new bridges)
+rupture_step=$(awk 'BEGIN { d = exp(log(1e-11) / 3); for (i = 1; i * 1e-6 <= d; i++); print i }')
+for case in 1e-13:0 1e-13:180 0:0; do
+    small=${case%:*} before=${case#*:}
+    log="$TMP/kept_${small}_$before.log"
+    if lmp 1 "$log" -in "$DECKS/in.reach" -var small "$small" -var before "$before" \
+        >/dev/null 2>&1; then
+        thermo "$log" >"$TMP/rows"
+        got=$(awk 'NF == 3 && $2 == 0 { print $1; exit }' "$TMP/rows")
+        ruptured=$(awk -v s="$got" '$1 == s { print $3 }' "$TMP/rows" | tail -1)
+        checks=$((checks + 1))
+        [ "$got" = "$rupture_step" ] && [ "$ruptured" = 1 ] ||
+            fail "volume $small after $before steps: the bridge went at step '$got' (ruptured '$ruptured'), expected its rupture at step $rupture_step"
+        checks=$((checks + 1))
+        ! grep -q "ruptured at the neighbor reach" "$log.screen" ||
+            fail "volume $small after $before steps: a bridge was ruptured at the neighbor reach"
+        echo "volume $small after $before steps: the bridge of 1e-11 m^3 ruptured at step $got (its rupture distance: step $rupture_step)"
+    else
+        fail "volume $small after $before steps: LAMMPS failed: $(grep -h -m1 ERROR "$log"*)"
+    fi
+done
 
 # the neighbor reach
 reach() {

@@ -55,17 +55,6 @@ expect fix_no_liquid "fix capillary/liquid protocol1: give the liquid once" \
 expect fix_volume_conflict "volume 1e-12 conflicts with fix capillary/liquid protocol2" \
     gran/capillary "$GOOD" protocol2 "water 0.01 1000"
 
-# every volume set to 0 between two runs while the spheres hold a bridge: the dry scene's
-# neighbor list would drop it with its liquid
-checks=$((checks + 1))
-lmp 1 "$TMP/dried.log" -in "$DECKS/in.errors" -var pstyle gran/capillary -var pcoeff "$GOOD" \
-    -var second yes -var pcoeff2 "100 40 0.3 0.4 law richefeu gamma 0.0728 volume 0" \
-    >/dev/null 2>&1 && fail "dried: LAMMPS succeeded; expected an error"
-line=$(grep -h -m1 'ERROR' "$TMP/dried.log" "$TMP/dried.log.screen" 2>/dev/null | head -1)
-printf '%s\n' "$line" | grep -Eq "atoms 1 and 2 hold a bridge of 1e-12 m\^3, but no type pair can hold one in this run \(every volume is 0\)" ||
-    fail "dried: error '$line' does not name the bridge and the cause"
-echo "dried: $line"
-
 # the time-step check: dt = 1e-3 s is far above 10 % of pi sqrt(m/k_n) (about 1.6e-4 s)
 checks=$((checks + 1))
 lmp 1 "$TMP/dt.log" -in "$DECKS/in.errors" -var pstyle gran/capillary -var pcoeff "$GOOD" \
