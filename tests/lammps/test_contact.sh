@@ -10,7 +10,8 @@
 #  - the pair history of a dry first run widens for a wet one, the tangential spring kept
 #    (1 and 2 ranks, and through a restart file);
 #  - a bridge keeps its own rupture distance when the volume is lowered between runs (the
-#    reach covers the bridges that exist);
+#    reach covers the bridges that exist); one that reaches the cutoff (a growing sphere)
+#    ruptures there, with a warning;
 #  - the neighbor reach: LAMMPS's neighbor cutoff is r1 + r2 + the rupture distance of
 #    the bridge volume in use (fixed: the pair_coeff volume; a protocol: vmax) + skin.
 . "$(dirname "$0")/lib.sh" "$@"
@@ -146,6 +147,27 @@ for case in 1e-13:0 1e-13:180 0:0; do
         fail "volume $small after $before steps: LAMMPS failed: $(grep -h -m1 ERROR "$log"*)"
     fi
 done
+
+# a bridge reaching the neighbor cutoff (here a sphere that grows during the run, so that
+# the radii outgrow the reach built at the setup) is ruptured there, with a warning, before
+# its pair leaves the list with its liquid
+log="$TMP/grown.log"
+if lmp 1 "$log" -in "$DECKS/in.reach" -var small 1e-11 -var before 0 -var grow 1.2 \
+    >/dev/null 2>&1; then
+    thermo "$log" >"$TMP/rows"
+    list_cut=$(sed -n 's/.*master list distance cutoff = //p' "$log" | tail -1)
+    expected=$(awk -v c="$list_cut" 'BEGIN { cut = c - 1e-4; for (i = 1; 2e-3 + i * 1e-6 < cut; i++); print i }')
+    got=$(awk 'NF == 3 && $2 == 0 { print $1; exit }' "$TMP/rows")
+    checks=$((checks + 1))
+    [ "$got" = "$expected" ] ||
+        fail "grown sphere: the bridge went at step '$got', expected step $expected (the reach)"
+    checks=$((checks + 1))
+    grep -q "1 bridge(s) ruptured at the neighbor reach" "$log.screen" ||
+        fail "grown sphere: no warning of a bridge ruptured at the neighbor reach"
+    echo "grown sphere: the bridge ruptured at step $got, at the reach (list cutoff $list_cut m)"
+else
+    fail "grown sphere: LAMMPS failed: $(grep -h -m1 ERROR "$log"*)"
+fi
 
 # the neighbor reach
 reach() {
