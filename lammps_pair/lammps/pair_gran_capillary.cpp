@@ -1069,7 +1069,23 @@ template <bool BRIDGES> void PairGranCapillary::form_bridges_and_forces()
     int *jlist = firstneigh[i];
     int *touch = firsttouch[i];
     double *allhistory = firstvalue[i];
-    for (int jj = 0; jj < numneigh[i]; jj++) {
+    const int jnum = numneigh[i];
+    for (int jj = 0;; jj++) {
+      // Skip to the next pair to compute.  Apart, neither touching nor bridged at the last
+      // step is the common case: no force, and no bridge can form (only at contact); its
+      // history is all zero (see pair_force), so it is neither read nor written.  A loop
+      // of its own, so that the compiler keeps its few values in registers: inside the
+      // pair loop they were spilled around the pair's work, ~48 instructions a skipped
+      // pair; this way 3 % fewer instructions in the whole run (callgrind, bench/README.md)
+      for (; jj < jnum; jj++) {
+        if (touch[jj] != 0) break;
+        const int k = jlist[jj] & NEIGHMASK;
+        const double dx = x[i][0] - x[k][0];
+        const double dy = x[i][1] - x[k][1];
+        const double dz = x[i][2] - x[k][2];
+        if (!cb_certainly_apart(dx * dx + dy * dy + dz * dz, radius[i] + radius[k])) break;
+      }
+      if (jj >= jnum) break;
       int j = jlist[jj];
       const double factor_lj = special[sbmask(j)];
       j &= NEIGHMASK;
@@ -1079,10 +1095,6 @@ template <bool BRIDGES> void PairGranCapillary::form_bridges_and_forces()
       const double delz = x[i][2] - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
       const double radsum = radius[i] + radius[j];
-      // apart, neither touching nor bridged at the last step: the common case.  No force,
-      // and no bridge can form (only at contact).  Its history is all zero (see
-      // pair_force), so it is neither read nor written: no square root, no core call.
-      if (touch[jj] == 0 && cb_certainly_apart(rsq, radsum)) continue;
       double *history = &allhistory[stride * jj];
       cb_bridge *bridge = bridge_of(history);
       const int jtype = type[j];
