@@ -547,8 +547,13 @@ void PairGranCapillary::widen_history()
   std::vector<double> wide;
   std::vector<std::vector<double>> packed(nlocal);
   for (int i = 0; i < nlocal; i++) {
+    // [npartner, then per partner: its tag and its values]
     const int length = fix_history->pack_exchange(i, narrow.data());
     const int npartner = static_cast<int>(narrow[0]);
+    if (length != 1 + (1 + SIZE_CONTACT) * npartner)
+      error->one(FLERR, "pair gran/capillary: atom {} has a pair history of {} values, not "
+                 "the {} of its {} partners", atom->tag[i], length,
+                 1 + (1 + SIZE_CONTACT) * npartner, npartner);
     wide.assign(1 + (1 + SIZE_BRIDGE) * npartner, 0.0);
     wide[0] = narrow[0];
     for (int n = 0; n < npartner; n++) {
@@ -556,10 +561,6 @@ void PairGranCapillary::widen_history()
       double *to = &wide[1 + (1 + SIZE_BRIDGE) * n];
       for (int k = 0; k < 1 + SIZE_CONTACT; k++) to[k] = from[k];    // partner tag, shear
     }
-    if (length != 1 + (1 + SIZE_CONTACT) * npartner)
-      error->one(FLERR, "pair gran/capillary: atom {} has a pair history of {} values, not "
-                 "the {} of its {} partners", atom->tag[i], length,
-                 1 + (1 + SIZE_CONTACT) * npartner, npartner);
     packed[i] = wide;
   }
 
