@@ -1,15 +1,15 @@
 #!/bin/sh
 # Two builds of the LAMMPS plugin against each other on one side of the benchmark scene
-# (bench/in.cycle.lammps, 16 000 grains, 2000 steps; the wet side unless SIDE says off), measured as part 1 of bench/run.sh
-# measures: both runs at the same time, pinned to one core, each holding it until both timed
-# runs are done (the deck's me/partner), and their CPU times compared; the launch order
-# alternates.  Prints, per repeat, B's CPU time over A's.  Run A against A first: its spread
+# (bench/in.cycle.lammps, 16 000 grains, 2000 steps; the wet side unless SIDE says off),
+# measured as part 1 of bench/run.sh measures: both runs at the same time, pinned to one
+# core, each holding it until both timed runs are done (the deck's me/partner), and their
+# CPU times compared; the launch order alternates.  Prints, per repeat, B's CPU time over A's.  Run A against A first: its spread
 # bounds what a comparison can resolve.  A developer's tool for a change to the hot path;
 # not a test.
 # Usage: bench/compare_builds.sh A.so B.so [REPEATS, default 4] [SIDE: wet (default) | off]
 # (copy build/lammps_pair/lammps/capbridgeplugin.so aside before rebuilding for B)
 set -eu
-[ $# -ge 2 ] || { echo "usage: $0 A.so B.so [REPEATS]" >&2; exit 2; }
+[ $# -ge 2 ] || { echo "usage: $0 A.so B.so [REPEATS] [wet|off]" >&2; exit 2; }
 a=$(realpath "$1") b=$(realpath "$2") repeats=${3:-4} scene_side=${4:-wet}
 case $scene_side in wet | off) ;; *) echo "$0: SIDE must be wet or off, not '$scene_side'" >&2; exit 2 ;; esac
 top=$(cd "$(dirname "$0")/.." && pwd)

@@ -105,6 +105,13 @@ cb_bridge *bridge_of(double *history)
 // receiver?  The rule is cb_protocol3_receiver's (the lowest contact strictly below the
 // centre); equal heights go to the smaller partner tag so that the choice does not
 // depend on the order in which ranks and neighbor lists present the bridges.
+// FixNeighHistory::pack_exchange's layout of one atom: the number of partners, then per
+// partner its tag and its `size` values.  Where partner p's entry (its tag) starts:
+int packed_entry(int partner, int size)
+{
+  return 1 + (1 + size) * partner;
+}
+
 bool better_receiver(double offset, tagint partner, double best_offset, tagint best_partner)
 {
   double heights[2];
@@ -512,7 +519,7 @@ std::string PairGranCapillary::history_id(int size) const
    at the first init, the NEIGH_HISTORY fix takes the placeholder's place in the fix list,
    with the layout this run needs (or a restart file's); a later run that can hold bridges
    widens a contact layout.  A dry scene's pairs carry 3 values instead of 10: the liquid-off
-   side of the benchmark x0.92-0.94 (bench/README.md).
+   side of the benchmark x0.91-0.94 (bench/README.md).
 ------------------------------------------------------------------------- */
 
 void PairGranCapillary::create_history()
@@ -543,22 +550,21 @@ void PairGranCapillary::widen_history()
 {
   const int nlocal = atom->nlocal;
   const int maxpartner = fix_history->get_maxpartner();
-  std::vector<double> narrow(1 + (1 + SIZE_CONTACT) * maxpartner);
+  std::vector<double> narrow(packed_entry(maxpartner, SIZE_CONTACT));
   std::vector<double> wide;
   std::vector<std::vector<double>> packed(nlocal);
   for (int i = 0; i < nlocal; i++) {
-    // [npartner, then per partner: its tag and its values]
     const int length = fix_history->pack_exchange(i, narrow.data());
     const int npartner = static_cast<int>(narrow[0]);
-    if (length != 1 + (1 + SIZE_CONTACT) * npartner)
+    if (length != packed_entry(npartner, SIZE_CONTACT))
       error->one(FLERR, "pair gran/capillary: atom {} has a pair history of {} values, not "
                  "the {} of its {} partners", atom->tag[i], length,
-                 1 + (1 + SIZE_CONTACT) * npartner, npartner);
-    wide.assign(1 + (1 + SIZE_BRIDGE) * npartner, 0.0);
+                 packed_entry(npartner, SIZE_CONTACT), npartner);
+    wide.assign(packed_entry(npartner, SIZE_BRIDGE), 0.0);
     wide[0] = narrow[0];
     for (int n = 0; n < npartner; n++) {
-      const double *from = &narrow[1 + (1 + SIZE_CONTACT) * n];
-      double *to = &wide[1 + (1 + SIZE_BRIDGE) * n];
+      const double *from = &narrow[packed_entry(n, SIZE_CONTACT)];
+      double *to = &wide[packed_entry(n, SIZE_BRIDGE)];
       for (int k = 0; k < 1 + SIZE_CONTACT; k++) to[k] = from[k];    // partner tag, shear
     }
     packed[i] = wide;
@@ -572,7 +578,7 @@ void PairGranCapillary::widen_history()
   fix_history->init();    // its partner pages, which unpack_exchange fills
   for (int i = 0; i < nlocal; i++) fix_history->unpack_exchange(i, packed[i].data());
   // an atom may change ranks at the setup before the fix's first pre_exchange sizes this
-  fix_history->maxexchange = (1 + SIZE_BRIDGE) * maxpartner + 1;
+  fix_history->maxexchange = packed_entry(maxpartner, SIZE_BRIDGE);
 }
 
 /* ----------------------------------------------------------------------
@@ -593,13 +599,13 @@ void PairGranCapillary::held_volumes()
   held_volume.assign(n + 1, 0.0);
   if (history_size == SIZE_BRIDGE) {
     int *type = atom->type;
-    std::vector<double> packed(1 + (1 + SIZE_BRIDGE) * fix_history->get_maxpartner());
+    std::vector<double> packed(packed_entry(fix_history->get_maxpartner(), SIZE_BRIDGE));
     for (int i = 0; i < atom->nlocal; i++) {
       fix_history->pack_exchange(i, packed.data());
       const int npartner = static_cast<int>(packed[0]);
       for (int p = 0; p < npartner; p++) {
-        // a partner's entry: its tag, then its SIZE_BRIDGE values
-        const cb_bridge *bridge = bridge_of(&packed[1 + (1 + SIZE_BRIDGE) * p + 1]);
+        // after the partner's tag, its values
+        const cb_bridge *bridge = bridge_of(&packed[packed_entry(p, SIZE_BRIDGE) + 1]);
         if (bridge->active != 0.0) local[type[i]] = MAX(local[type[i]], bridge->volume);
       }
     }

@@ -144,7 +144,8 @@ class PairGranCapillary : public Pair {
   int history_size;    // SIZE_CONTACT or SIZE_BRIDGE: fix_history's values a pair (0: no fix yet)
   FixCapillaryLiquid *fix_liquid;
   int liquid_mode, liquid_groupbit;
-  int bridges_possible;    // 0: no type pair can hold a bridge in this run (init_style)
+  int bridges_possible;    // 0: no type pair can form a bridge in this run and none exists
+                           // (init_style)
   std::vector<double> held_volume;    // per type: the largest bridge that exists (init_style)
 
   // per-atom scratch of one force evaluation (owned + ghost), Protocols 2 and 3
@@ -188,7 +189,7 @@ class PairGranCapillary : public Pair {
                                                   const TypePair &tp, cb_bridge *bridge);
   void derive_bridges();
   void update_bridges();
-  // BRIDGES false: a run in which no type pair can hold a bridge (bridges_possible 0)
+  // BRIDGES false: a run without bridges (bridges_possible 0)
   template <bool BRIDGES> void form_bridges_and_forces();
   template <bool BRIDGES>
   void pair_force(const AtomArrays &a, const TypePair &tp, int i, int j, double delx,
