@@ -20,6 +20,12 @@ Usage: bench/run.sh [--parts 1,2,3,4] [--repeats N] [--quick]
   --quick: smaller scenes and fewer points (a check that the benchmark runs, ~5 min)
 Writes out/bench/part<N>.md and assembles bench/README.md from bench/README.head.md and every
 part measured so far (each part states its own date, machine and command).
+
+       bench/run.sh --compare A.so|stock B.so [--side wet|off] [--repeats N, default 4]
+Instead of the parts: two builds of the LAMMPS plugin against each other, by part 1's method,
+on one side of its scene (16 000 grains, 2000 steps); A may be stock, LAMMPS's own dry style.
+Prints B's CPU time over A's per repeat (copy build/lammps_pair/lammps/capbridgeplugin.so
+aside before rebuilding for B).  A developer's tool for a change to the hot path.
 """
 import argparse
 import datetime
@@ -144,23 +150,16 @@ def part1(ctx):
     }
 
     def beside_stock(name, r):
-        """`name` and stock at once on core 0, each holding it until both timed runs are done
-        (the deck's me/partner); the launch order alternates.  Returns (stock, name) Loops."""
+        """`name` and stock at once on one core (engines.beside); the launch order alternates.
+        Returns (stock, name) Loops."""
         runs = [("reference", "stock"), ("measured", name)]
         if r % 2:
             runs.reverse()
-        started = {}
-        for label, side in runs:
-            partner = "measured" if label == "reference" else "reference"
-            flag = os.path.join(work, f"{label}.done")
-            if os.path.exists(flag):
-                os.remove(flag)
-            variables = dict(sides[side], data=data, nx=copies[0], ny=copies[1], nz=copies[2],
-                             steps=2000, me=label, partner=partner)
-            started[label] = engines.start(ctx.lammps, 1, deck, work, f"{name}.{label}.{r}.log",
-                                           variables, core=0)
-        logs = dict(zip(started, engines.finish_together(list(started.values()))))
-        return engines.loops(logs["reference"])[0], engines.loops(logs["measured"])[0]
+        loops = engines.beside(ctx.lammps, deck, work, [
+            (label, f"{name}.{label}.{r}.log",
+             dict(sides[side], data=data, nx=copies[0], ny=copies[1], nz=copies[2], steps=2000))
+            for label, side in runs])
+        return loops["reference"], loops["measured"]
 
     ratios = {name: [] for name in sides}
     cpu_us = {name: [] for name in sides}
@@ -398,12 +397,48 @@ def assemble():
     return summaries
 
 
+def compare(ctx, a, b, side):
+    """Two builds of the LAMMPS plugin against each other on one side of part 1's scene, by
+    part 1's method (engines.beside, the launch order alternating); a may be "stock",
+    LAMMPS's own dry style.  Prints B's CPU time over A's per repeat: a developer's tool for
+    a change to the hot path.  Run A against A first: its spread bounds what a comparison
+    can resolve."""
+    data = base_packing(ctx)
+    deck = os.path.join(HERE, "in.cycle.lammps")
+    work = os.path.join(OUT, "compare")
+    builds = {"A": a, "B": b}
+    for r in range(ctx.repeats):
+        order = ["A", "B"] if r % 2 == 0 else ["B", "A"]
+        runs = []
+        for label in order:
+            build = builds[label]
+            variables = ({"side": "stock"} if build == "stock"
+                         else {"side": side, "plugin": build})
+            runs.append((label, f"{label}.log", dict(variables, data=data, nx=2, ny=2, nz=2,
+                                                      steps=2000)))
+        loops = engines.beside(ctx.lammps, deck, work, runs)
+        ta, tb = loops["A"].cpu_seconds(), loops["B"].cpu_seconds()
+        print(f"repeat {r + 1}: B/A CPU time {tb / ta:.3f} ({tb:.2f} s / {ta:.2f} s)",
+              flush=True)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--parts", default="1,2,3,4")
     parser.add_argument("--repeats", type=int, default=None)
     parser.add_argument("--quick", action="store_true")
+    parser.add_argument("--compare", nargs=2, metavar=("A", "B"),
+                        help="instead of the parts: two plugin builds (A may be 'stock') on "
+                        "one side of part 1's scene")
+    parser.add_argument("--side", default="wet", help="the side --compare runs: wet or off")
     args = parser.parse_args()
+    if args.side not in ("wet", "off"):
+        engines.fail(f"--side must be wet or off, not '{args.side}'")
+    if args.compare:
+        for label, build in zip("AB", args.compare):
+            if not (build == "stock" and label == "A") and not os.path.isfile(build):
+                engines.fail(f"--compare: {label} must be a plugin file"
+                             f"{' or stock' if label == 'A' else ''}, not '{build}'")
     try:
         parts = [int(p) for p in args.parts.split(",")]
     except ValueError:
@@ -412,7 +447,7 @@ def main():
         engines.fail(f"--parts: unknown part in '{args.parts}' (allowed: 1, 2, 3, 4)")
     if args.repeats is not None and args.repeats < 1:
         engines.fail(f"--repeats must be >= 1, not {args.repeats}")
-    for path in (PLUGIN, CLI):
+    for path in () if args.compare else (PLUGIN, CLI):
         if not os.path.isfile(path):
             engines.fail(f"no {path}: run scripts/configure.sh first")
     cache = os.environ.get("CAPBRIDGE_CACHE", os.path.join(os.path.expanduser("~"), ".cache",
@@ -428,6 +463,12 @@ def main():
     ctx.lammps = (lammps["LAMMPS_MPIRUN"], [lammps["LAMMPS_BINARY"], "-nocite"])
     ctx.liggghts = (liggghts["LIGGGHTS_MPIRUN"], [liggghts["LIGGGHTS_BINARY"]])
     os.makedirs(OUT, exist_ok=True)
+    if args.compare:
+        a, b = (build if build == "stock" else os.path.realpath(build)
+                for build in args.compare)
+        ctx.repeats = args.repeats or 4
+        compare(ctx, a, b, args.side)
+        return
     for part in parts:
         print(f"bench: part {part}", flush=True)
         text, summary = PARTS[part](ctx)

@@ -122,6 +122,28 @@ def finish_together(runs):
     return [finish(run) for run in runs]
 
 
+def beside(engine, deck, workdir, runs, core=0):
+    """Two runs of one deck at the same time, both pinned to `core`, each holding it until
+    both timed runs are done (the deck's me/partner: a run that has finished its timed run
+    touches <me>.done in workdir and keeps running, untimed, until <partner>.done exists), so
+    that the two share the core, and the machine's state, for the whole of both timed runs.
+    runs: [(label, log, variables), (label, log, variables)] in launch order.  Returns
+    {label: the log's first Loop}."""
+    labels = [label for label, _, _ in runs]
+    if len(runs) != 2 or labels[0] == labels[1]:
+        fail(f"beside() takes two runs with different labels, not {labels}")
+    started = []
+    for label, log, variables in runs:
+        flag = os.path.join(workdir, f"{label}.done")
+        if os.path.exists(flag):
+            os.remove(flag)
+        partner = labels[1] if label == labels[0] else labels[0]
+        started.append(start(engine, 1, deck, workdir, log,
+                             dict(variables, me=label, partner=partner), core=core))
+    logs = finish_together(started)
+    return {label: loops(log)[0] for label, log in zip(labels, logs)}
+
+
 def run(engine, ranks, deck, workdir, log, variables):
     """One deck, start() to finish(): returns the log's path."""
     return finish(start(engine, ranks, deck, workdir, log, variables))
