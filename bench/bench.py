@@ -449,8 +449,11 @@ def main():
     parser.add_argument("--compare", nargs=2, metavar=("A", "B"),
                         help="instead of the parts: two plugin builds (A may be 'stock') on "
                         "one side of part 1's scene")
-    parser.add_argument("--side", default="wet", help="the side --compare runs: wet or off")
+    parser.add_argument("--side", help="the side --compare runs: wet (default) or off")
     args = parser.parse_args()
+    if args.side is not None and not args.compare:
+        engines.fail("--side goes with --compare (the parts run every side)")
+    args.side = args.side or "wet"
     if args.side not in ("wet", "off"):
         engines.fail(f"--side must be wet or off, not '{args.side}'")
     if args.compare:

@@ -10,6 +10,6 @@ set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 cd "$top"
 compare=0
-for arg in "$@"; do [ "$arg" = --compare ] && compare=1; done
+for arg in "$@"; do case $arg in --compare) compare=1 ;; esac; done
 [ "${CAPBRIDGE_SKIP_CONFIGURE:-0}" = 1 ] || [ "$compare" = 1 ] || scripts/configure.sh
 exec /usr/bin/python3 bench/bench.py "$@"
