@@ -56,10 +56,12 @@ COHESION_MODEL(COHESION_CAPILLARY,capillary,9)
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
+#include "fix_contact_history.h"
 #include "force.h"
 #include "modify.h"
 #include "neighbor.h"
 #include "update.h"
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -734,8 +736,9 @@ namespace ContactModels {
     /* The pair loop visits a pair while r < contact_distance_factor * radsum. The
      * factor must cover the largest rupture distance relative to the radius sum: it is
      * estimated from the smallest and largest radius (particles and insertion fixes)
-     * and the largest bridge volume (bridgeVolume, or twice the largest free liquid),
-     * with 10 % margin. check_reach_at() verifies every bridge when it forms. */
+     * and the largest bridge volume (bridgeVolume, or twice the largest free liquid, and
+     * the bridges that exist: held_volumes), with 10 % margin. check_reach_at() verifies
+     * every bridge when it forms. */
     void register_reach(PropertyRegistry & registry)
     {
       const double rmin = registry.min_radius();
@@ -751,9 +754,21 @@ namespace ContactModels {
         MPI_Allreduce(&most, &protocol2_volume, 1, MPI_DOUBLE, MPI_MAX, world);
         protocol2_volume *= 2.0;
       }
+      const std::vector<double> held = held_volumes();
       double ratio = 0.0;
       for (int a = 1; a <= ntypes_; ++a)
         for (int b = a; b <= ntypes_; ++b) {
+          // an existing bridge formed under its law's validity for its own radii; at the
+          // bounding radii its rupture distance is taken as the law extends it
+          cb_law extended = *law_for(a, b);
+          extended.validity = CB_VALIDITY_EXTEND;
+          const double existing = std::max(held[a], held[b]);
+          for (int k = 0; existing > 0.0 && k < 3; ++k) {
+            double rupture = 0.0;
+            if (cb_rupture_distance(&extended, radii[k][0], radii[k][1], existing,
+                                    &rupture) == CB_OK)
+              ratio = std::max(ratio, rupture / (radii[k][0] + radii[k][1]));
+          }
           const double volume = protocol2_ ? protocol2_volume : bridge_volume_[a][b];
           if (!(volume > 0.0)) continue;
           for (int k = 0; k < 3; ++k) {
@@ -775,6 +790,32 @@ namespace ContactModels {
           }
         }
       if (ratio > 0.0) neighbor->register_contact_dist_factor(1.0 + 1.1 * ratio);
+    }
+
+    /* The largest bridge that exists, per atom type, over all ranks: bridges read from a
+     * restart file, or kept from the last run, in fix contacthistory's per-atom partner
+     * arrays.  The liquid on offer now may not cover them (Protocol 2 once the free liquid
+     * is in bridges; a lower bridgeVolume), and a restart starts the contact distance
+     * factor again from 1: a bridge stretched beyond the reach would leave the neighbor
+     * list with its liquid, without a word. */
+    std::vector<double> held_volumes()
+    {
+      std::vector<double> local(ntypes_ + 1, 0.0), all(ntypes_ + 1, 0.0);
+      FixContactHistory *history = static_cast<FixContactHistory *>(
+          modify->find_fix_style_strict("contacthistory", 0));
+      if (history) {
+        const int *type = atom->type;
+        for (int i = 0; i < atom->nlocal; ++i)
+          for (int k = 0; k < history->n_partner(i); ++k) {
+            cb_bridge bridge;
+            std::memcpy(&bridge, history->contacthistory(i, k) + history_offset_,
+                        sizeof bridge);
+            if (bridge.active != 0.0 && bridge.volume > local[type[i]])
+              local[type[i]] = bridge.volume;
+          }
+      }
+      MPI_Allreduce(local.data(), all.data(), ntypes_ + 1, MPI_DOUBLE, MPI_MAX, world);
+      return all;
     }
 
     // the first step beyond the rupture distance must still be visited

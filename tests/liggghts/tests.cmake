@@ -42,6 +42,15 @@ add_test(NAME liggghts_easo_comparison
 add_test(NAME liggghts_between_runs
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/between_runs.py ${CAPBRIDGE_LIGGGHTS_ENV}
                  --workdir ${_liggghts_work}/between_runs)
+# a stretched bridge and its liquid through a restart file (Protocol 2, no free liquid left),
+# on 1 rank and with one sphere per rank
+add_test(NAME liggghts_restart
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/restart.py ${CAPBRIDGE_LIGGGHTS_ENV}
+                 --workdir ${_liggghts_work}/restart)
+add_test(NAME liggghts_restart_mpi
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/restart.py ${CAPBRIDGE_LIGGGHTS_ENV}
+                 --ranks 2 --workdir ${_liggghts_work}/restart_mpi)
 set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts_bad_input
                      liggghts_friction liggghts_easo_comparison liggghts_between_runs
+                     liggghts_restart liggghts_restart_mpi
                      PROPERTIES LABELS "liggghts" TIMEOUT 600)
