@@ -765,9 +765,20 @@ namespace ContactModels {
           const double existing = std::max(held[a], held[b]);
           for (int k = 0; existing > 0.0 && k < 3; ++k) {
             double rupture = 0.0;
-            if (cb_rupture_distance(&extended, radii[k][0], radii[k][1], existing,
-                                    &rupture) == CB_OK)
-              ratio = std::max(ratio, rupture / (radii[k][0] + radii[k][1]));
+            const cb_status status = cb_rupture_distance(&extended, radii[k][0], radii[k][1],
+                                                         existing, &rupture);
+            if (status != CB_OK) {
+              // (not reached with a valid history: the bridge formed with this volume)
+              char text[512];
+              snprintf(text, sizeof text,
+                       "cohesion model capillary: an existing bridge of %g m^3 (atom types "
+                       "%d %d) has no rupture distance with radii %g and %g m, so the reach "
+                       "cannot be set to keep it: law %s: %s",
+                       existing, a, b, radii[k][0], radii[k][1], law_name_.c_str(),
+                       cb_status_message(status));
+              error->all(FLERR, text);
+            }
+            ratio = std::max(ratio, rupture / (radii[k][0] + radii[k][1]));
           }
           const double volume = protocol2_ ? protocol2_volume : bridge_volume_[a][b];
           if (!(volume > 0.0)) continue;
