@@ -30,6 +30,8 @@ extern "C" {
 
 /* ---------------------------------------------------------------- status */
 
+#define CB_PI 3.14159265358979323846 /* the one definition: angles cross the API in radians */
+
 typedef enum cb_status {
     CB_OK = 0,
     CB_ERR_NULL,             /* a required pointer argument is NULL */
@@ -48,6 +50,12 @@ typedef enum cb_status {
 
 /* A short English sentence for a status; never NULL. */
 const char *cb_status_message(cb_status status);
+
+/* The number grammar of every text input (law keywords, the CLI, the engines' keyword
+ * values): the whole string is one number in decimal notation -- no blanks, no
+ * hexadecimal, inf or nan -- within double range (an overflow or an underflow to 0 or a
+ * subnormal is refused, not rounded). Returns 1 and sets *value, else 0. */
+int cb_parse_number(const char *text, double *value);
 
 /* A message buffer for configuration errors: names what is wrong and what is allowed. */
 typedef struct cb_message {
@@ -92,7 +100,12 @@ struct cb_table; /* the tabulated exact solution, opaque */
 
 /* A law is a value: model, parameters and options, plus what is derived from them
  * once (cb_law_prepare). Fill it with cb_law_init, change it with cb_law_configure,
- * then call cb_law_prepare before the first force call. */
+ * then call cb_law_prepare before the first force call.
+ * One exception to "value": a prepared table law owns its table through a pointer. A
+ * plain copy of it is a move: go on with one of the two (only it is prepared again,
+ * configured or released; the other is not used again), as a std::vector of laws does.
+ * A second independent table law is made with cb_law_init and cb_law_prepare of its own.
+ * cb_law_init on a prepared table law leaks its table: release it first. */
 typedef struct cb_law {
     cb_model model;
     double surface_tension;   /* gamma [N/m] */
@@ -318,7 +331,9 @@ double cb_protocol_share(double volume, double r1, double r2);
  * alpha. Liquid is conserved: sum volume = total_liquid up to rounding.
  * Pairs are admitted in the order of the alpha at which they become eligible; when the
  * total falls in a jump of sum(alpha) (eqs. 13-14 have no exact solution), the pair at
- * the jump stays dry. CB_ERR_LIQUID when liquid > 0 but no pair can hold it.
+ * the jump and every pair whose threshold lies between it and the alpha returned stay
+ * dry, although eligible at that alpha (protocol1.c says why). CB_ERR_LIQUID when
+ * liquid > 0 but no pair can hold it.
  * work: scratch of at least 2 n doubles and n size_t (caller-provided, no allocation). */
 typedef struct cb_protocol1_work {
     double *threshold;  /* n */
@@ -351,8 +366,13 @@ typedef struct cb_exact_problem {
     double contact_angle;    /* [rad], 0 <= theta < pi/2 */
     double surface_tension;  /* [N/m] */
     double volume;           /* [m^3] */
-    int steps;               /* integration steps along the profile; 0 = default */
+    int steps;               /* integration steps along the profile: 0 (the default,
+                              * CB_EXACT_DEFAULT_STEPS) or CB_EXACT_MIN_STEPS to
+                              * CB_EXACT_MAX_STEPS; else CB_ERR_RANGE */
 } cb_exact_problem;
+#define CB_EXACT_DEFAULT_STEPS 256
+#define CB_EXACT_MIN_STEPS 16
+#define CB_EXACT_MAX_STEPS 1000000
 
 /* The bridge at one gap (0 <= gap <= rupture distance), on the branch connected to
  * gap = 0. CB_ERR_NO_BRIDGE beyond rupture. */

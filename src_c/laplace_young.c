@@ -6,9 +6,6 @@
 
 #include <math.h>
 
-#define DEFAULT_STEPS 256
-#define MIN_STEPS 16
-#define MAX_STEPS 1000000
 /* A requested gap this close above the fold (relative) is taken as the fold itself: the
  * fold is known to the discretisation error only, and a round trip through SI units
  * (distance = R_h * fold) may move it by an ulp. */
@@ -21,9 +18,9 @@ static cb_status check_problem(const cb_exact_problem *p)
         return CB_ERR_NOT_FINITE;
     if (p->r1 <= 0.0 || p->r2 <= 0.0 || p->surface_tension <= 0.0 || p->volume <= 0.0)
         return CB_ERR_NEGATIVE;
-    if (p->contact_angle < 0.0 || p->contact_angle >= 0.5 * LY_PI)
+    if (p->contact_angle < 0.0 || p->contact_angle >= 0.5 * CB_PI)
         return CB_ERR_RANGE;
-    if (p->steps < 0 || (p->steps > 0 && p->steps < MIN_STEPS) || p->steps > MAX_STEPS)
+    if (p->steps < 0 || (p->steps > 0 && p->steps < CB_EXACT_MIN_STEPS) || p->steps > CB_EXACT_MAX_STEPS)
         return CB_ERR_RANGE;
     return CB_OK;
 }
@@ -44,7 +41,7 @@ static ly_geometry make_geometry(const cb_exact_problem *p, double *unit)
     g.r2 = p->r2 / rh;
     g.theta = p->contact_angle;
     g.volume = p->volume / (rh * rh * rh);
-    g.steps = p->steps > 0 ? p->steps : DEFAULT_STEPS;
+    g.steps = p->steps > 0 ? p->steps : CB_EXACT_DEFAULT_STEPS;
     *unit = rh;
     return g;
 }

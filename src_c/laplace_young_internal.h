@@ -16,10 +16,10 @@
 #ifndef LAPLACE_YOUNG_INTERNAL_H
 #define LAPLACE_YOUNG_INTERNAL_H
 
+#include "capbridge.h" /* CB_PI */
+
 enum { LY_DELTA1 = 0, LY_DELTA2, LY_PRESSURE, LY_LENGTH, LY_GAP, LY_NVAR };
 enum { LY_RES_X = 0, LY_RES_Y, LY_RES_PHI, LY_RES_VOLUME, LY_NRES };
-
-#define LY_PI 3.14159265358979323846
 
 /* The nondimensional problem. */
 typedef struct ly_geometry {

@@ -8,7 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define CB_PI 3.14159265358979323846
 
 static const char *const model_names[CB_MODEL_COUNT] = {
     "richefeu", "willett", "willett/reduced", "rabinovich", "rabinovich/uncorrected",
@@ -94,17 +93,6 @@ cb_status cb_law_init(cb_law *law, cb_model model, double surface_tension, doubl
     return CB_OK;
 }
 
-/* A whole string that is one finite number. */
-static int parse_number(const char *text, double *value)
-{
-    char *end = NULL;
-    if (!text || !*text) return 0;
-    double v = strtod(text, &end);
-    if (end == text || *end != '\0' || !isfinite(v)) return 0;
-    *value = v;
-    return 1;
-}
-
 /* Any change leaves the law unprepared until cb_law_prepare derives it again. */
 static cb_status apply_keyword(cb_law *law, const char *keyword, const char *value,
                                cb_message *msg);
@@ -122,12 +110,13 @@ static cb_status apply_keyword(cb_law *law, const char *keyword, const char *val
 {
     if (!value) return cb_fail(msg, CB_ERR_RANGE, "keyword '%s' needs a value", keyword);
     double number = 0.0;
-    int is_number = parse_number(value, &number);
+    int is_number = cb_parse_number(value, &number);
 
     if (strcmp(keyword, "gamma") == 0) {
         if (!is_number)
             return cb_fail(msg, CB_ERR_RANGE,
-                           "gamma '%s' is not a number: give the surface tension in N/m (> 0)",
+                           "gamma '%s' is not a decimal number within double range: give the "
+                           "surface tension in N/m (> 0)",
                            value);
         cb_status status = check_surface_tension(number, msg);
         if (status == CB_OK) law->surface_tension = number;
@@ -136,8 +125,8 @@ static cb_status apply_keyword(cb_law *law, const char *keyword, const char *val
     if (strcmp(keyword, "theta") == 0) {
         if (!is_number)
             return cb_fail(msg, CB_ERR_RANGE,
-                           "theta '%s' is not a number: give the contact angle in degrees, "
-                           "0 <= theta < 90",
+                           "theta '%s' is not a decimal number within double range: give the "
+                           "contact angle in degrees, 0 <= theta < 90",
                            value);
         cb_status status = check_contact_angle(number * CB_PI / 180.0, msg);
         if (status == CB_OK) law->contact_angle = number * CB_PI / 180.0;

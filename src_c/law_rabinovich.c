@@ -32,7 +32,6 @@
 
 #include <math.h>
 
-#define CB_PI 3.14159265358979323846
 
 /* The corrected law; also returns d_sp and its gap derivative for the alpha-term. */
 static void rabinovich_corrected(const cb_law *law, const cb_pair *pair, double gap,

@@ -11,7 +11,6 @@
 
 #include <math.h>
 
-#define CB_PI 3.14159265358979323846
 
 double cb_richefeu_inverse_length(const cb_law *law, const cb_pair *pair)
 {

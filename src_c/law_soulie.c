@@ -21,7 +21,6 @@
 
 #include <math.h>
 
-#define CB_PI 3.14159265358979323846
 
 cb_status cb_soulie_force(const cb_law *law, const cb_pair *pair, double gap, double *force,
                           double *stiffness)

@@ -24,7 +24,6 @@
 #include <math.h>
 #include <stdlib.h>
 
-#define CB_PI 3.14159265358979323846
 
 /* The grid. Node positions are given together with the reciprocal steps the lookup
  * multiplies by, since a division on every call would cost more than the interpolation:
@@ -220,21 +219,36 @@ double cb_table_rupture(const cb_law *law, const cb_pair *pair)
     return pair->table.scaled_rupture * pair->r_harmonic;
 }
 
-/* The inverse of the rupture distance in the volume, by bisection in ln V (it is
- * monotone: a larger bridge reaches further). */
+/* The inverse of the rupture distance in the volume.  Outside the table's volumes the
+ * rupture distance is its edge value times (v / v_edge)^(1/3) (scaled_rupture), inverted
+ * exactly; inside, by bisection in ln v (it is monotone: a larger bridge reaches further). */
 double cb_table_rupture_volume(const cb_law *law, const cb_pair *pair_in, double gap)
 {
     cb_pair pair = *pair_in;
     double rh = pair.r_harmonic;
-    double lo = log(1e-30), hi = log(1e30);
+    double rh3 = rh * rh * rh;
+    double scaled_gap = gap / rh;
+    pair.volume = table_volume_min * rh3;
+    cb_table_locate(law, &pair);
+    if (scaled_gap <= pair.table.scaled_rupture) {
+        double shrink = scaled_gap / pair.table.scaled_rupture;
+        return table_volume_min * (shrink * shrink * shrink) * rh3;
+    }
+    pair.volume = table_volume_max * rh3;
+    cb_table_locate(law, &pair);
+    if (scaled_gap >= pair.table.scaled_rupture) {
+        double grow = scaled_gap / pair.table.scaled_rupture;
+        return table_volume_max * (grow * grow * grow) * rh3; /* inf beyond double range */
+    }
+    double lo = log(table_volume_min), hi = log(table_volume_max);
     for (int iteration = 0; iteration < 200 && hi - lo > 1e-14 * fabs(hi); ++iteration) {
         double mid = 0.5 * (lo + hi);
-        pair.volume = exp(mid) * rh * rh * rh;
+        pair.volume = exp(mid) * rh3;
         cb_table_locate(law, &pair);
-        if (cb_table_rupture(law, &pair) < gap) lo = mid;
+        if (pair.table.scaled_rupture < scaled_gap) lo = mid;
         else hi = mid;
     }
-    return exp(hi) * rh * rh * rh;
+    return exp(hi) * rh3;
 }
 
 /* The Hermite cell of w, with the (q, ln v)-weighted values and w-slopes at its ends. */
@@ -291,7 +305,15 @@ cb_status cb_table_force(const cb_law *law, const cb_pair *pair, double gap, dou
     hermite_cell c = cell_at(t, &pair->table, w);
     double scale = 2.0 * CB_PI * law->surface_tension * pair->r_harmonic;
     double value = hermite_value(&c, w);
-    *force = value > 0.0 ? value * scale : 0.0;
+    if (!(value > 0.0) || gap >= rupture) {
+        /* clamped at 0 (a repulsive exact force near contact at large angles), or held at
+         * its value at the fold beyond it (a rupture rule reaching further than the
+         * exact one): the force does not change with the gap there */
+        *force = value > 0.0 ? value * scale : 0.0;
+        *stiffness = 0.0;
+        return CB_OK;
+    }
+    *force = value * scale;
     /* dF/dgap = dF/dw / (dgap/dw), dgap/dw = -4 rupture w (1 - w^2). Both vanish at
      * contact (a finite limit) and dgap/dw vanishes at the fold (the exact force has an
      * infinite slope there). Within half a cell of either end the stiffness is taken at

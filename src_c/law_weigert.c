@@ -63,7 +63,6 @@
 
 #include <math.h>
 
-#define CB_PI 3.14159265358979323846
 
 #define WEIGERT_CAP_FRACTION 0.75
 #define WEIGERT_CAP_ANGLE (50.0 * CB_PI / 180.0)

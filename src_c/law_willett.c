@@ -54,7 +54,6 @@
 
 #include <math.h>
 
-#define CB_PI 3.14159265358979323846
 
 #define WILLETT_THETA_MAX (50.0 * CB_PI / 180.0) /* stated: theta < 50 deg */
 #define WILLETT_VOLUME_MAX 0.1                    /* stated: V* < 0.1 */

@@ -109,7 +109,7 @@ static int predict_in_delta1(const ly_profile *p, const double z[LY_NVAR], doubl
  * whole wedge between the spheres, V = pi y^4 / (2 R_h), capped well inside both spheres. */
 static double initial_filling_angle(const ly_geometry *g)
 {
-    double y = pow(2.0 * g->volume / LY_PI, 0.25);
+    double y = pow(2.0 * g->volume / CB_PI, 0.25);
     return asin(fmin(y, 0.5 * fmin(g->r1, g->r2)) / g->r1);
 }
 
@@ -143,7 +143,7 @@ int ly_start_at_contact(const ly_geometry *g, double z[LY_NVAR])
             copy_point(z, trial);
             return 1;
         }
-        factor = fmin(factor, 0.5 * (1.0 + LY_PI / z[LY_DELTA1])); /* delta1 stays < pi */
+        factor = fmin(factor, 0.5 * (1.0 + CB_PI / z[LY_DELTA1])); /* delta1 stays < pi */
         if (predict_in_delta1(&p, z, factor, trial) && solve_fixed_delta1(g, trial, &q)) {
             copy_point(z, trial);
             p = q;

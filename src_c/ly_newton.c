@@ -161,7 +161,7 @@ static double step_limit(const double z[LY_NVAR], const double dz[LY_NVAR])
         if (dz[k] < 0.0)
             lambda = fmin(lambda, (2.0 / 3.0) * z[k] / -dz[k]);
         else if (dz[k] > 0.0)
-            lambda = fmin(lambda, (2.0 / 3.0) * (LY_PI - z[k]) / dz[k]);
+            lambda = fmin(lambda, (2.0 / 3.0) * (CB_PI - z[k]) / dz[k]);
         if (fabs(dz[k]) > 0.5)
             lambda = fmin(lambda, 0.5 / fabs(dz[k]));
     }

@@ -25,19 +25,19 @@ static double cap_height(double r, double delta)
 static double cap_volume(double r, double delta)
 {
     double h = cap_height(r, delta);
-    return LY_PI * h * h * (3.0 * r - h) / 3.0;
+    return CB_PI * h * h * (3.0 * r - h) / 3.0;
 }
 
 static double cap_volume_derivative(double r, double delta)
 {
     double h = cap_height(r, delta);
-    return LY_PI * h * (2.0 * r - h) * r * sin(delta);
+    return CB_PI * h * (2.0 * r - h) * r * sin(delta);
 }
 
 double ly_contact_force(double radius, double delta, double theta, double pressure)
 {
     double y = radius * sin(delta);
-    return 2.0 * LY_PI * y * sin(delta + theta) - LY_PI * y * y * pressure;
+    return 2.0 * CB_PI * y * sin(delta + theta) - CB_PI * y * y * pressure;
 }
 
 /* d w / dt for the profile (first STATE entries) and, when n == AUGMENTED, for its
@@ -55,7 +55,7 @@ static int profile_rhs(const double *w, int n, double pressure, double length, d
     dw[SX] = length * c;
     dw[SY] = length * sn;
     dw[SPHI] = length * (c / y - pressure);
-    dw[SV] = length * LY_PI * y * y * c;
+    dw[SV] = length * CB_PI * y * y * c;
     if (n == STATE)
         return 1;
     for (k = 0; k < PARAMS; ++k) {
@@ -65,7 +65,7 @@ static int profile_rhs(const double *w, int n, double pressure, double length, d
         dq[SX] = -length * sn * dphi;
         dq[SY] = length * c * dphi;
         dq[SPHI] = length * (-c / (y * y) * dy - sn / y * dphi);
-        dq[SV] = length * LY_PI * y * (2.0 * c * dy - y * sn * dphi);
+        dq[SV] = length * CB_PI * y * (2.0 * c * dy - y * sn * dphi);
     }
     dw[STATE * (1 + PPRESSURE) + SPHI] -= length;
     for (k = 0; k < STATE; ++k)
@@ -106,7 +106,7 @@ static void initial_state(const ly_geometry *g, double delta1, double *w, int n)
         w[i] = 0.0;
     w[SX] = -cap_height(g->r1, delta1);
     w[SY] = g->r1 * sin(delta1);
-    w[SPHI] = delta1 + g->theta - 0.5 * LY_PI;
+    w[SPHI] = delta1 + g->theta - 0.5 * CB_PI;
     if (n == AUGMENTED) {
         double *q = w + STATE * (1 + PDELTA1);
         q[SX] = -g->r1 * sin(delta1);
@@ -120,11 +120,11 @@ static void initial_state(const ly_geometry *g, double delta1, double *w, int n)
  * Falls back on the node value when that root is not consistent with the nodes. */
 static double neck_radius(double force, double pressure, double y_node)
 {
-    double d = 1.0 - pressure * force / LY_PI;
+    double d = 1.0 - pressure * force / CB_PI;
     double y;
     if (!(d >= 0.0) || !(force > 0.0))
         return y_node;
-    y = force / (LY_PI * (1.0 + sqrt(d)));
+    y = force / (CB_PI * (1.0 + sqrt(d)));
     return (y <= y_node * (1.0 + 1e-6) && y >= 0.5 * y_node) ? y : y_node;
 }
 
@@ -138,7 +138,7 @@ static void fill_residuals(const ly_geometry *g, const double z[LY_NVAR], const 
     p->volume = w[SV] - caps;
     p->residual[LY_RES_X] = w[SX] - (z[LY_GAP] + cap_height(r2, d2));
     p->residual[LY_RES_Y] = w[SY] - r2 * sin(d2);
-    p->residual[LY_RES_PHI] = w[SPHI] - (0.5 * LY_PI - d2 - g->theta);
+    p->residual[LY_RES_PHI] = w[SPHI] - (0.5 * CB_PI - d2 - g->theta);
     p->residual[LY_RES_VOLUME] = p->volume - g->volume;
     if (!with_jacobian)
         return;
@@ -183,7 +183,7 @@ int ly_shoot(const ly_geometry *g, const double z[LY_NVAR], int with_jacobian,
         return 0;
     fill_residuals(g, z, w, with_jacobian, profile);
     /* The first integral at the smallest node, F = 2 pi y cos(phi) - pi y^2 P. */
-    profile->neck_force = 2.0 * LY_PI * y_min * cos(phi_min) - LY_PI * y_min * y_min * pressure;
+    profile->neck_force = 2.0 * CB_PI * y_min * cos(phi_min) - CB_PI * y_min * y_min * pressure;
     profile->neck_radius = (k_min > 0 && k_min < steps)
                                ? neck_radius(profile->neck_force, pressure, y_min)
                                : y_min;
@@ -200,7 +200,7 @@ void ly_toroidal_guess(const ly_geometry *g, double delta1, double z[LY_NVAR])
     double delta2 = asin(fmin(y1 / g->r2, 0.99));
     double y2 = g->r2 * sin(delta2);
     double x1 = -cap_height(g->r1, delta1), x2 = cap_height(g->r2, delta2);
-    double phi1 = delta1 + g->theta - 0.5 * LY_PI, phi2 = 0.5 * LY_PI - delta2 - g->theta;
+    double phi1 = delta1 + g->theta - 0.5 * CB_PI, phi2 = 0.5 * CB_PI - delta2 - g->theta;
     double turning = phi2 - phi1;
     double chord = hypot(x2 - x1, y2 - y1);
     /* A circle arc of turning angle dphi over the chord L: S = L / sinc(dphi/2); its

@@ -21,10 +21,13 @@
  *   - if V_liquid falls in a jump of S (at a threshold t: S(t-) <= V_liquid < S(t)), eqs.
  *     13-14 have no self-consistent solution: with the pair(s) at t alpha drops below t,
  *     without them alpha is >= t. We keep the pairs below t and leave the margin pair dry,
- *     although it is eligible at the alpha we return. Condition (iii) holds for every wet
- *     pair and eq. 13 holds; only "all eligible pairs receive liquid" fails, for that
- *     pair. Admission is by threshold order: a pair with a higher threshold is not admitted
- *     in place of the margin pair even if it alone could have been.
+ *     although it is eligible at the alpha we return -- and with it every pair whose
+ *     threshold lies in [t, alpha] (all eligible at alpha, none admissible in threshold
+ *     order, since admitting the first of them drops alpha below its threshold).
+ *     Condition (iii) holds for every wet pair and eq. 13 holds; only "all eligible pairs
+ *     receive liquid" fails, for those pairs. Admission is by threshold order: a pair
+ *     with a higher threshold is not admitted in place of the margin pair even if it alone
+ *     could have been.
  * With no pair admissible (the liquid is less than the rupture volume of the pair with the
  * lowest threshold, and no pair touches) the liquid cannot be placed in bridges:
  * CB_ERR_LIQUID, and nothing is written.

@@ -307,6 +307,13 @@ static void test_configure_messages(void)
         {"theta", "-5", CB_ERR_RANGE, {"theta", "-5", "0 <= theta < 90"}, 3},
         {"theta", "abc", CB_ERR_RANGE, {"theta", "abc", "0 <= theta < 90"}, 3},
         {"theta", "nan", CB_ERR_RANGE, {"theta", "nan"}, 2},
+        /* the one number grammar (cb_parse_number): decimal, whole string, double range */
+        {"theta", "0x10", CB_ERR_RANGE, {"theta", "0x10", "decimal number"}, 3},
+        {"theta", " 10", CB_ERR_RANGE, {"theta", " 10", "decimal number"}, 3},
+        {"theta", "10 ", CB_ERR_RANGE, {"theta", "10 ", "decimal number"}, 3},
+        {"gamma", "1e-400", CB_ERR_RANGE, {"gamma", "1e-400", "within double range"}, 3},
+        {"gamma", "1e400", CB_ERR_RANGE, {"gamma", "1e400", "within double range"}, 3},
+        {"gamma", "inf", CB_ERR_RANGE, {"gamma", "inf", "decimal number"}, 3},
         {"gamma", "-1", CB_ERR_NEGATIVE, {"gamma", "-1", "> 0"}, 3},
         {"gamma", "0", CB_ERR_NEGATIVE, {"gamma", "> 0"}, 2},
         {"gamma", "x", CB_ERR_RANGE, {"gamma", "x", "> 0"}, 3},
@@ -338,6 +345,10 @@ static void test_configure_messages(void)
     /* accepted values take effect (degrees in, radians stored) */
     CHECK_STATUS(cb_law_configure(&law, "theta", "30", &msg), CB_OK);
     CHECK_REL(law.contact_angle, 30.0 * DEG, 1e-15);
+    CHECK_STATUS(cb_law_configure(&law, "gamma", "+2.5E-2", &msg), CB_OK);
+    CHECK(law.surface_tension == 0.025);
+    CHECK_STATUS(cb_law_configure(&law, "theta", ".5e1", &msg), CB_OK);
+    CHECK_REL(law.contact_angle, 5.0 * DEG, 1e-15);
     CHECK_STATUS(cb_law_configure(&law, "overlap", "none", &msg), CB_OK);
     CHECK(law.overlap == CB_OVERLAP_NONE);
     CHECK_STATUS(cb_law_configure(&law, "validity", "strict", &msg), CB_OK);

@@ -131,10 +131,10 @@ namespace capbridge_liggghts
     }
     inline bool check_number(const std::string &k, const std::string &v, std::string &why)
     {
-        char *end = NULL;
-        const double x = strtod(v.c_str(), &end);
-        if (end != v.c_str() && *end == '\0' && x == x) return true;
-        why = "cohesion model capillary: " + k + " '" + v + "' is not a number";
+        double x = 0.0;
+        if (cb_parse_number(v.c_str(), &x)) return true;
+        why = "cohesion model capillary: " + k + " '" + v +
+              "' is not a decimal number within double range";
         return false;
     }
 

@@ -45,16 +45,13 @@ int cli_status_error(const char *command, const char *what, cb_status status)
     return cli_runtime_error(command, "%s: %s", what, cb_status_message(status));
 }
 
-int cli_parse_number(const char *text, double *value)
+const char *cli_describe_pair(char *buffer, size_t size, const cb_law *law, double r1,
+                              double r2, double volume)
 {
-    char *end = NULL;
-    if (!text || !*text) return 0;
-    /* decimal notation only: no blanks, no hexadecimal, no "inf" or "nan" */
-    if (text[strspn(text, "0123456789+-.eE")] != '\0') return 0;
-    double v = strtod(text, &end);
-    if (end == text || *end != '\0' || !isfinite(v)) return 0;
-    *value = v;
-    return 1;
+    snprintf(buffer, size, "law %s (gamma %.10g N/m, theta %.10g deg), r1 %.10g m, r2 %.10g m, "
+             "volume %.10g m^3", cb_model_name(law->model), law->surface_tension,
+             law->contact_angle * 180.0 / CB_PI, r1, r2, volume);
+    return buffer;
 }
 
 /* A whole number, decimal digits with an optional sign. */
@@ -110,8 +107,8 @@ static int take_value(const cli_request *request, cli_option *option, const char
     }
     case CLI_FLAG: break;
     default:
-        if (!cli_parse_number(value, &number))
-            return cli_usage_error(cmd, "option %s: '%s' is not a finite number", option->name,
+        if (!cb_parse_number(value, &number))
+            return cli_usage_error(cmd, "option %s: '%s' is not a decimal number within double range", option->name,
                                    value);
         if (option->kind == CLI_POSITIVE && !(number > 0.0))
             return cli_usage_error(cmd, "option %s: %s must be > 0 (%s)", option->name, value,

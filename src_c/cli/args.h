@@ -69,10 +69,6 @@ typedef struct cli_request {
  * fails). */
 int cli_parse(cli_request *request, int argc, char **argv, int *exit_code);
 
-/* A whole string that is one finite number in decimal notation (no leading or trailing
- * text, no blanks, no hexadecimal, inf or nan). */
-int cli_parse_number(const char *text, double *value);
-
 /* Messages: "capbridge COMMAND: ..." on stderr, one line; return the exit code. */
 int cli_usage_error(const char *command, const char *format, ...)
 #if defined(__GNUC__)
@@ -86,6 +82,11 @@ int cli_runtime_error(const char *command, const char *format, ...)
     ;
 /* A failed core call: "capbridge COMMAND: WHAT: <cb_status_message>"; exit code 1. */
 int cli_status_error(const char *command, const char *what, cb_status status);
+
+/* "law L (gamma G N/m, theta T deg), r1 A m, r2 B m, volume V m^3" into buffer: the inputs
+ * of a failed call, so that its message shows which of them is out of range. */
+const char *cli_describe_pair(char *buffer, size_t size, const cb_law *law, double r1,
+                              double r2, double volume);
 
 /* The law specification help shared by every law subcommand. */
 void cli_print_law_help(FILE *out);

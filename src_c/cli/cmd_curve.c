@@ -3,6 +3,7 @@
 #include "args.h"
 #include "commands.h"
 
+#include <math.h>
 #include <stdio.h>
 
 static const char usage[] =
@@ -36,9 +37,12 @@ int cmd_curve(int argc, char **argv)
     double r1 = options[R1].number, r2 = options[R2].number, volume = options[VOLUME].number;
     double rupture = 0.0;
     cb_status status = cb_rupture_distance(&law, r1, r2, volume, &rupture);
+    char inputs[256], what[320];
+    cli_describe_pair(inputs, sizeof inputs, &law, r1, r2, volume);
     if (status != CB_OK) {
         cb_law_release(&law);
-        return cli_status_error(name, "rupture distance", status);
+        snprintf(what, sizeof what, "rupture distance of %s", inputs);
+        return cli_status_error(name, what, status);
     }
     double from = options[FROM].number;
     double to = options[TO].given ? options[TO].number : 1.05 * rupture;
@@ -49,6 +53,12 @@ int cmd_curve(int argc, char **argv)
                                options[TO].given ? "" : " (1.05 x the rupture distance)");
     }
 
+    if (!isfinite(to - from)) {
+        cb_law_release(&law);
+        return cli_usage_error(name, "the range from --from %.17g to --to %.17g is wider than a "
+                               "double holds: give gaps whose difference is finite", from, to);
+    }
+
     long n = options[POINTS].integer;
     puts("gap,force,stiffness");
     for (long i = 0; i < n; ++i) {
@@ -57,8 +67,7 @@ int cmd_curve(int argc, char **argv)
         double row[3] = {gap, 0.0, 0.0};
         status = cb_force(&law, r1, r2, volume, gap, &row[1], &row[2]);
         if (status != CB_OK) {
-            char what[64];
-            snprintf(what, sizeof what, "force at gap %.17g", gap);
+            snprintf(what, sizeof what, "force at gap %.10g m, %s", gap, inputs);
             code = cli_status_error(name, what, status);
             break;
         }

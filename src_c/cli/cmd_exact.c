@@ -6,7 +6,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#define PI 3.14159265358979323846
 
 static const char usage[] =
     "usage: capbridge exact --r1 M --r2 M --volume M3 [--theta DEG] [--gamma N/m]\n"
@@ -16,7 +15,8 @@ static const char usage[] =
     "connected to contact.\n"
     "  --theta DEG  contact angle, 0 <= theta < 90 (default 0)\n"
     "  --gamma N/m  surface tension, > 0 (default 0.0728)\n"
-    "  --steps N    integration steps along the profile (default 0: the solver's own)\n"
+    "  --steps N    integration steps along the profile: 0 (default: the solver's own, 256)\n"
+    "               or 16 to 1000000\n"
     "  --gap M      the bridge at one gap, 0 <= gap <= rupture distance\n"
     "  --curve N    N >= 2 gaps evenly spaced from 0 to the rupture distance inclusive\n"
     "  --rupture    the bridge at the rupture distance (its gap is the distance)\n"
@@ -50,7 +50,7 @@ int cmd_exact(int argc, char **argv)
         {.name = "--gamma", .kind = CLI_POSITIVE, .meaning = "surface tension [N/m]",
          .number = CLI_DEFAULT_GAMMA},
         {.name = "--steps", .kind = CLI_INTEGER, .meaning = "integration steps",
-         .minimum = 0, .maximum = 100000000L},
+         .minimum = 0, .maximum = CB_EXACT_MAX_STEPS},
         {.name = "--gap", .kind = CLI_NONNEGATIVE, .meaning = "gap [m]"},
         {.name = "--curve", .kind = CLI_INTEGER, .meaning = "number of gaps",
          .minimum = 2, .maximum = 1000000L},
@@ -64,13 +64,19 @@ int cmd_exact(int argc, char **argv)
         return cli_usage_error(name, "give exactly one of --gap, --curve, --rupture (%s)",
                                modes ? "several given" : "none given");
 
+    long steps = options[STEPS].integer;
+    if (steps > 0 && steps < CB_EXACT_MIN_STEPS)
+        return cli_usage_error(name, "option --steps: %ld is too few: allowed 0 (the solver's "
+                               "default, %d) or %d to %d", steps, CB_EXACT_DEFAULT_STEPS,
+                               CB_EXACT_MIN_STEPS, CB_EXACT_MAX_STEPS);
+
     cb_exact_problem problem;
     problem.r1 = options[R1].number;
     problem.r2 = options[R2].number;
     problem.volume = options[VOLUME].number;
-    problem.contact_angle = options[THETA].number * PI / 180.0;
+    problem.contact_angle = options[THETA].number * CB_PI / 180.0;
     problem.surface_tension = options[GAMMA].number;
-    problem.steps = (int)options[STEPS].integer;
+    problem.steps = (int)steps;
 
     cb_exact_bridge bridge;
     cb_status status;

@@ -34,11 +34,16 @@ int cmd_force(int argc, char **argv)
     double r1 = options[R1].number, r2 = options[R2].number, volume = options[VOLUME].number;
     double gap = options[GAP].number;
     double rupture = 0.0, force = 0.0, stiffness = 0.0;
+    char inputs[256], what[320];
+    cli_describe_pair(inputs, sizeof inputs, &law, r1, r2, volume);
     cb_status status = cb_rupture_distance(&law, r1, r2, volume, &rupture);
-    if (status != CB_OK) code = cli_status_error(name, "rupture distance", status);
-    else {
+    if (status != CB_OK) {
+        snprintf(what, sizeof what, "rupture distance of %s", inputs);
+        code = cli_status_error(name, what, status);
+    } else {
         status = cb_force(&law, r1, r2, volume, gap, &force, &stiffness);
-        if (status != CB_OK) code = cli_status_error(name, "force", status);
+        snprintf(what, sizeof what, "force at gap %.10g m, %s", gap, inputs);
+        if (status != CB_OK) code = cli_status_error(name, what, status);
     }
     if (code == CLI_EXIT_OK) {
         double row[4] = {gap, force, stiffness, rupture};

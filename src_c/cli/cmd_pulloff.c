@@ -37,7 +37,6 @@
 #include <math.h>
 #include <stdio.h>
 
-#define PI 3.14159265358979323846
 
 static const char usage[] =
     "usage: capbridge pulloff LAW [keyword value]... --r1 M --r2 M --volume M3\n"
@@ -158,8 +157,8 @@ int cmd_pulloff(int argc, char **argv)
     p.kn = options[KN].number;
     p.velocity = options[VELOCITY].number;
     double density = options[DENSITY].number;
-    double m1 = 4.0 * PI / 3.0 * p.r1 * p.r1 * p.r1 * density;
-    double m2 = 4.0 * PI / 3.0 * p.r2 * p.r2 * p.r2 * density;
+    double m1 = 4.0 * CB_PI / 3.0 * p.r1 * p.r1 * p.r1 * density;
+    double m2 = 4.0 * CB_PI / 3.0 * p.r2 * p.r2 * p.r2 * density;
     double m = m1 * m2 / (m1 + m2);
     p.eta = 2.0 * options[DAMPING].number * sqrt(m * p.kn);
 
@@ -171,15 +170,15 @@ int cmd_pulloff(int argc, char **argv)
         cb_law_release(&law);
         return cli_status_error(name, "rupture distance", status);
     }
-    double dt_elastic = 0.02 * PI * sqrt(m / p.kn);
+    double dt_elastic = 0.02 * CB_PI * sqrt(m / p.kn);
     double dt_pull = rupture / (p.velocity * 2000.0);
     double dt = options[DT].given ? options[DT].number : fmin(dt_elastic, dt_pull);
     double stiffest = fmax(p.kn, capillary_stiffness);
-    if (dt > 0.1 * PI * sqrt(m / stiffest))
+    if (dt > 0.1 * CB_PI * sqrt(m / stiffest))
         fprintf(stderr,
                 "capbridge pulloff: warning: dt = %g s exceeds 10 %% of pi sqrt(m / k) = %g s "
                 "(k = %g N/m, the larger of k_n and the capillary stiffness)\n",
-                dt, PI * sqrt(m / stiffest), stiffest);
+                dt, CB_PI * sqrt(m / stiffest), stiffest);
     double pull_steps = ceil(rupture / (p.velocity * dt));
     double max_default = fmin(10.0 * pull_steps + 1000.0 + (double)options[AFTER].integer, 1e9);
     long max_steps = options[MAX_STEPS].given ? options[MAX_STEPS].integer : (long)max_default;
@@ -188,7 +187,7 @@ int cmd_pulloff(int argc, char **argv)
     printf("# capbridge pulloff");
     for (int i = 1; i < argc; ++i) printf(" %s", argv[i]);
     printf("\n# law = %s, gamma = %.17g N/m, theta = %.17g deg\n", cb_model_name(law.model),
-           law.surface_tension, law.contact_angle * 180.0 / PI);
+           law.surface_tension, law.contact_angle * 180.0 / CB_PI);
     printf("# m1 = %.17g kg, m2 = %.17g kg, reduced_mass = %.17g kg\n", m1, m2, m);
     printf("# kn = %.17g N/m, damping_coefficient = %.17g kg/s, velocity = %.17g m/s\n", p.kn,
            p.eta, p.velocity);

@@ -3,11 +3,11 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "args.h"
 #include "capbridge.h"
 #include "cases.h"
 #include "reference.h"
 
-#define CB_PI 3.14159265358979323846
 
 static void print_header(const char *set)
 {
@@ -57,46 +57,44 @@ static int print_case(const cb_case *c)
 
 int cmd_reference(int argc, char **argv)
 {
-    const char *usage = "usage: capbridge reference cases|grid [--only NAME]\n";
-    if (argc < 2 || strcmp(argv[1], "--help") == 0) {
-        fputs(usage, argc < 2 ? stderr : stdout);
-        return argc < 2 ? 2 : 0;
+    const char *name = "reference";
+    static const char usage[] =
+        "usage: capbridge reference cases|grid [--only NAME]\n"
+        "\n"
+        "The exact Laplace-Young curves of reference_data/ as CSV on standard output:\n"
+        "  cases        Gladkyy's 13 pull-off cases (reference_data/cases.csv)\n"
+        "  grid         the grid of configurations (reference_data/grid.csv)\n"
+        "  --only NAME  one configuration of the set, by its name (e.g. W11)\n";
+    enum { ONLY, N_OPTIONS };
+    cli_option options[N_OPTIONS] = {
+        {.name = "--only", .kind = CLI_TEXT, .meaning = "the name of one configuration"},
+    };
+    cli_request request = {name, usage, 0, NULL, options, N_OPTIONS, "cases|grid", NULL};
+    int code;
+    if (!cli_parse(&request, argc, argv, &code)) return code;
+    const char *set = request.positional;
+    if (!set) return cli_usage_error(name, "missing the set: allowed cases, grid");
+    if (strcmp(set, "cases") != 0 && strcmp(set, "grid") != 0)
+        return cli_usage_error(name, "unknown set '%s': allowed cases, grid", set);
+    const char *only = options[ONLY].given ? options[ONLY].text : NULL;
+    int grid = strcmp(set, "grid") == 0;
+    size_t count = grid ? cb_grid_case_count() : cb_gladkyy_case_count;
+    int found = 0;
+    for (size_t i = 0; only && !found && i < count; ++i) {
+        char config[48];
+        cb_case c = grid ? cb_grid_case(i, config, sizeof config) : cb_gladkyy_cases[i];
+        found = strcmp(only, c.name) == 0;
     }
-    const char *set = argv[1];
-    const char *only = NULL;
-    for (int i = 2; i < argc; ++i) {
-        if (strcmp(argv[i], "--only") == 0 && i + 1 < argc) {
-            only = argv[++i];
-        } else {
-            fprintf(stderr, "capbridge reference: unknown option '%s': allowed --only NAME\n",
-                    argv[i]);
-            return 2;
-        }
-    }
-    int failures = 0, found = 0;
-    if (strcmp(set, "cases") == 0) {
-        print_header("cases");
-        for (size_t i = 0; i < cb_gladkyy_case_count; ++i) {
-            if (only && strcmp(only, cb_gladkyy_cases[i].name) != 0) continue;
-            ++found;
-            failures += print_case(&cb_gladkyy_cases[i]);
-        }
-    } else if (strcmp(set, "grid") == 0) {
-        print_header("grid");
-        for (size_t i = 0; i < cb_grid_case_count(); ++i) {
-            char name[48];
-            cb_case c = cb_grid_case(i, name, sizeof name);
-            if (only && strcmp(only, name) != 0) continue;
-            ++found;
-            failures += print_case(&c);
-        }
-    } else {
-        fprintf(stderr, "capbridge reference: unknown set '%s': allowed cases, grid\n", set);
-        return 2;
-    }
-    if (only && !found) {
-        fprintf(stderr, "capbridge reference: no configuration named '%s' in %s\n", only, set);
-        return 2;
+    if (only && !found)
+        return cli_usage_error(name, "no configuration named '%s' in %s", only, set);
+
+    int failures = 0;
+    print_header(set);
+    for (size_t i = 0; i < count; ++i) {
+        char config[48];
+        cb_case c = grid ? cb_grid_case(i, config, sizeof config) : cb_gladkyy_cases[i];
+        if (only && strcmp(only, c.name) != 0) continue;
+        failures += print_case(&c);
     }
     return failures ? 1 : 0;
 }

@@ -218,8 +218,8 @@ static void replay_row(replay *r, char *text, long line)
             return;
         }
         const char *field = r->field[r->column[k] - 1];
-        if (!cli_parse_number(field, &value[k])) {
-            row_problem(r, line, "column %ld (%s) is '%s', not a finite number", r->column[k],
+        if (!cb_parse_number(field, &value[k])) {
+            row_problem(r, line, "column %ld (%s) is '%s', not a decimal number within double range", r->column[k],
                         column_names[k], field);
             return;
         }
@@ -271,7 +271,7 @@ static int numeric_row(replay *r, const char *text)
     int numeric = count >= r->needed;
     for (long k = 0; numeric && k < r->needed; ++k) {
         double ignored;
-        numeric = cli_parse_number(r->field[k], &ignored);
+        numeric = cb_parse_number(r->field[k], &ignored);
     }
     free(copy);
     return numeric;
@@ -326,7 +326,7 @@ static int replay_file(replay *r, FILE *file)
         if (expect_count) {
             double count = 0.0;
             expect_count = 0;
-            if (!cli_parse_number(text, &count) || count < 0.0 || count != floor(count)) {
+            if (!cb_parse_number(text, &count) || count < 0.0 || count != floor(count)) {
                 row_problem(r, line, "ITEM: NUMBER OF ENTRIES: '%s' is not a count", text);
                 continue;
             }

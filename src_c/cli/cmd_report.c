@@ -14,7 +14,6 @@
 #include "law_cost.h"
 #include "reference.h"
 
-#define CB_PI 3.14159265358979323846
 
 #ifndef CAPBRIDGE_REFERENCE_DIR
 #define CAPBRIDGE_REFERENCE_DIR "reference_data"

@@ -25,7 +25,13 @@ int cmd_rupture(int argc, char **argv)
     double rupture = 0.0;
     cb_status status = cb_rupture_distance(&law, options[R1].number, options[R2].number,
                                            options[VOLUME].number, &rupture);
-    if (status != CB_OK) code = cli_status_error(name, "rupture distance", status);
+    if (status != CB_OK) {
+        char inputs[256], what[320];
+        cli_describe_pair(inputs, sizeof inputs, &law, options[R1].number, options[R2].number,
+                          options[VOLUME].number);
+        snprintf(what, sizeof what, "rupture distance of %s", inputs);
+        code = cli_status_error(name, what, status);
+    }
     else {
         puts("rupture_distance");
         cli_print_row(stdout, 1, &rupture);

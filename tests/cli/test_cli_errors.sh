@@ -49,9 +49,9 @@ expect 2 "keyword without value before an option" "keyword 'gamma' needs a value
 expect 2 "keyword without value at the end" "keyword 'theta' needs a value" -- rupture richefeu theta
 expect 2 "unknown keyword without value" "unknown keyword 'bogus'" -- force richefeu bogus $G --gap 0
 expect 2 "theta out of range" "theta = 95 degrees" "0 <= theta < 90" -- force richefeu theta 95 $G --gap 0
-expect 2 "theta not a number" "theta '1e-3x' is not a number" -- force richefeu theta 1e-3x $G --gap 0
-expect 2 "gamma nan" "gamma 'nan' is not a number" -- force richefeu gamma nan $G --gap 0
-expect 2 "gamma empty" "gamma '' is not a number" -- force richefeu gamma "" $G --gap 0
+expect 2 "theta not a number" "theta '1e-3x' is not a decimal number within double range" -- force richefeu theta 1e-3x $G --gap 0
+expect 2 "gamma nan" "gamma 'nan' is not a decimal number within double range" -- force richefeu gamma nan $G --gap 0
+expect 2 "gamma empty" "gamma '' is not a decimal number within double range" -- force richefeu gamma "" $G --gap 0
 expect 2 "gamma negative" "gamma = -0.07" "> 0" -- curve richefeu gamma -0.07 $G
 expect 2 "unknown rupture rule" "rupture 'foo'" "allowed lian, willett, default" -- force richefeu rupture foo $G --gap 0
 expect 2 "unknown overlap rule" "overlap 'partial'" "allowed contact, none" -- force richefeu overlap partial $G --gap 0
@@ -65,13 +65,19 @@ expect 2 "unknown option" "unknown option '--gapp'" "allowed --r1, --r2, --volum
 expect 2 "unknown option with =" "unknown option '--radius'" -- force richefeu --radius=1e-3 $G --gap 0
 expect 2 "option without value at the end" "option --gap needs a value" -- force richefeu $G --gap
 expect 2 "option followed by an option" "option --r1 needs a value" -- force richefeu --r1 --r2 1e-3 --volume 1e-11 --gap 0
-expect 2 "trailing garbage" "option --gap: '1e-3x' is not a finite number" -- force richefeu $G --gap 1e-3x
-expect 2 "empty number" "option --gap: '' is not a finite number" -- force richefeu $G --gap ""
-expect 2 "empty number with =" "option --gap: '' is not a finite number" -- force richefeu $G --gap=
-expect 2 "nan" "option --gap: 'nan' is not a finite number" -- force richefeu $G --gap nan
-expect 2 "inf" "option --volume: 'inf' is not a finite number" -- force richefeu --r1 1e-3 --r2 1e-3 --volume inf --gap 0
-expect 2 "a blank before a number" "option --gap: ' 1' is not a finite number" -- force richefeu $G --gap " 1"
-expect 2 "hexadecimal" "option --r1: '0x1p-10' is not a finite number" -- force richefeu --r1 0x1p-10 --r2 1e-3 --volume 1e-11 --gap 0
+expect 2 "trailing garbage" "option --gap: '1e-3x' is not a decimal number within double range" -- force richefeu $G --gap 1e-3x
+expect 2 "empty number" "option --gap: '' is not a decimal number within double range" -- force richefeu $G --gap ""
+expect 2 "empty number with =" "option --gap: '' is not a decimal number within double range" -- force richefeu $G --gap=
+expect 2 "nan" "option --gap: 'nan' is not a decimal number within double range" -- force richefeu $G --gap nan
+expect 2 "inf" "option --volume: 'inf' is not a decimal number within double range" -- force richefeu --r1 1e-3 --r2 1e-3 --volume inf --gap 0
+expect 2 "a blank before a number" "option --gap: ' 1' is not a decimal number within double range" -- force richefeu $G --gap " 1"
+expect 2 "hexadecimal" "option --r1: '0x1p-10' is not a decimal number within double range" -- force richefeu --r1 0x1p-10 --r2 1e-3 --volume 1e-11 --gap 0
+# one number grammar for the options and the law keywords (cb_parse_number)
+expect 2 "keyword in hexadecimal" "theta '0x10' is not a decimal number within double range" -- force richefeu theta 0x10 $G --gap 0
+expect 2 "keyword with a blank" "theta ' 10' is not a decimal number" -- force richefeu theta " 10" $G --gap 0
+expect 2 "keyword underflow" "gamma '1e-400' is not a decimal number within double range" -- force richefeu gamma 1e-400 $G --gap 0
+expect 2 "option underflow" "option --gap: '1e-400' is not a decimal number within double range" -- force richefeu $G --gap 1e-400
+expect 2 "option overflow" "option --gap: '1e400' is not a decimal number within double range" -- force richefeu $G --gap 1e400
 expect 2 "missing --volume" "missing option --volume" "liquid bridge volume" -- force richefeu --r1 1e-3 --r2 1e-3 --gap 0
 expect 2 "missing --gap" "missing option --gap" -- force richefeu $G
 expect 2 "negative radius" "option --r1: -1e-3 must be > 0" -- force richefeu --r1 -1e-3 --r2 1e-3 --volume 1e-11 --gap 0
@@ -82,11 +88,12 @@ expect 2 "--points 1" "option --points: 1 is out of range" "allowed 2 to" -- cur
 expect 2 "--points 2.5" "option --points: '2.5' is not a whole number" -- curve richefeu $G --points 2.5
 expect 2 "--points huge" "option --points: '99999999999999999999999' is not a whole number" -- curve richefeu $G --points 99999999999999999999999
 expect 2 "empty range" "--from 0.0001 must be below --to 1.0000000000000001e-05" -- curve richefeu $G --from 1e-4 --to 1e-5
+expect 2 "range wider than a double" "is wider than a double holds" -- curve richefeu $G --from -1e308 --to 1e308 --points 3
 expect 2 "--damping 1.5" "option --damping: 1.5 must be in [0, 1]" -- pulloff richefeu $G --damping 1.5
 expect 2 "--velocity 0" "option --velocity: 0 must be > 0" -- pulloff richefeu $G --velocity 0
 expect 2 "--dt -1" "option --dt: -1 must be > 0" -- pulloff richefeu $G --dt -1
 expect 2 "--steps-after-rupture -1" "option --steps-after-rupture: -1 is out of range" -- pulloff richefeu $G --steps-after-rupture -1
-expect 2 "--density x" "option --density: 'x' is not a finite number" -- pulloff richefeu $G --density x
+expect 2 "--density x" "option --density: 'x' is not a decimal number within double range" -- pulloff richefeu $G --density x
 expect 2 "flag with a value" "option --rupture takes no value" -- exact $G --rupture=1
 
 # exact
@@ -94,6 +101,8 @@ expect 2 "exact without a mode" "give exactly one of --gap, --curve, --rupture (
 expect 2 "exact with two modes" "give exactly one of --gap, --curve, --rupture (several given)" -- exact $G --gap 0 --rupture
 expect 2 "exact --theta 90" "option --theta: 90 must satisfy 0 <= angle < 90" -- exact $G --theta 90 --rupture
 expect 2 "exact --curve 1" "option --curve: 1 is out of range" -- exact $G --curve 1
+expect 2 "exact --steps 5" "option --steps: 5 is too few: allowed 0 (the solver's default, 256) or 16 to 1000000" -- exact $G --steps 5 --rupture
+expect 2 "exact --steps 2000000" "option --steps: 2000000 is out of range" "allowed 0 to 1000000" -- exact $G --steps 2000000 --rupture
 expect 2 "exact negative gap" "option --gap: -1e-6 must be >= 0" -- exact $G --gap -1e-6
 expect 2 "exact takes no law" "unexpected argument 'richefeu'" -- exact richefeu $G --rupture
 
@@ -132,8 +141,21 @@ grep -q "^  pulloff" "$TMP/out" || fail "capbridge --help lacks the subcommand l
 checks=$((checks + 1))
 grep -qF "$LAWS" "$TMP/out" || fail "capbridge force --help lacks the laws"
 
+
+# reference: the same conventions as the other subcommands
+expect 2 "reference without a set" "missing the set: allowed cases, grid" -- reference
+expect 2 "reference, unknown set" "unknown set 'foo': allowed cases, grid" -- reference foo
+expect 2 "reference --only without a name" "option --only needs a value" -- reference cases --only
+expect 2 "reference --only twice" "option --only is given twice" -- reference cases --only W11 --only W12
+expect 2 "reference, unknown name" "no configuration named 'W99' in cases" -- reference cases --only W99
+"$CB" reference -h >"$TMP/out" 2>"$TMP/err"
+checks=$((checks + 1))
+grep -q "^usage: capbridge reference" "$TMP/out" || fail "capbridge reference -h: $(cat "$TMP/err")"
+
 # run-time failures: exit 1 with the core's message
 expect 1 "no exact bridge beyond rupture" "no bridge" -- exact $G --gap 1e-2
 expect 1 "validity strict outside the validity" "validity" -- force richefeu theta 30 validity strict $G --gap 0
+# a failure the inputs cause names them, so that the one out of range shows
+expect 1 "force that overflows" "force at gap 0 m, law richefeu (gamma 1e+308 N/m, theta 0 deg), r1 0.001 m, r2 0.001 m, volume 1e-11 m^3" -- force richefeu gamma 1e308 $G --gap 0
 
 finish

@@ -103,7 +103,7 @@ expect_malformed() {
     grep -qF -- "$needle" "$TMP/err" || fail "$label: stderr lacks '$needle': $(cat "$TMP/err")"
 }
 sed '4s/ 3e-12 / abc /' "$TMP/table.txt" >"$TMP/bad1"
-expect_malformed "a word in a number column" "$TMP/bad1" "bad1:4: column 4 (volume) is 'abc', not a finite number" --columns "$COLUMNS"
+expect_malformed "a word in a number column" "$TMP/bad1" "bad1:4: column 4 (volume) is 'abc', not a decimal number within double range" --columns "$COLUMNS"
 sed '6s/ [^ ]*$//' "$TMP/table.txt" >"$TMP/bad2"
 expect_malformed "a short row" "$TMP/bad2" "bad2:6: 5 fields, but column 6 (force) is needed" --columns "$COLUMNS"
 sed '4s/,2e-5,/,nan,/' "$TMP/table.csv" >"$TMP/bad3"
