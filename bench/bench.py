@@ -18,8 +18,10 @@ rotating from one repeat to the next.  Nothing here is a test: no time is assert
 
 Usage: bench/run.sh [--parts 1,2,3,4] [--repeats N] [--quick]
   --quick: smaller scenes and fewer points (a check that the benchmark runs, ~5 min)
-Writes out/bench/part<N>.md and assembles bench/README.md from bench/README.head.md and every
-part measured so far (each part states its own date, machine and command).
+Writes bench/results/part<N>.md for each part it runs and assembles bench/README.md from
+bench/README.head.md and the four parts' latest results (each states its own date, machine and
+command), so that one part can be measured again alone.  --quick writes its parts to
+out/bench/quick/ and leaves bench/README.md as it is.
 
        bench/run.sh --compare A.so|stock B.so [--side wet|off] [--repeats N, default 4]
 Instead of the parts: two builds of the LAMMPS plugin against each other, by part 1's method,
@@ -41,6 +43,7 @@ import engines
 HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.dirname(HERE)
 OUT = os.path.join(TOP, "out", "bench")
+RESULTS = os.path.join(HERE, "results")    # each part's latest full measurement
 PLUGIN = os.path.join(TOP, "build", "lammps_pair", "lammps", "capbridgeplugin.so")
 CLI = os.path.join(TOP, "build", "src_c", "cli", "capbridge")
 
@@ -305,23 +308,30 @@ def part3(ctx):
              f"{fastest:.2f}): parallel efficiency **{100 * speedup / 2:.0f} %**.\n\n")
 
     data = base_packing(ctx)
-    grids = [(1, 1, 1), (2, 1, 1), (2, 2, 1), (2, 2, 2)]
+    grids = {"1x1x1": (1, 1, 1), "2x1x1": (2, 1, 1), "2x2x1": (2, 2, 1), "2x2x2": (2, 2, 2)}
     if not ctx.quick:
-        grids += [(4, 2, 2), (4, 4, 2)]
-    text += ("Cyclic compression scene, wet (gran/capillary, law richefeu), the base packing "
-             "replicated; 1000 steps (half a cycle), 2 ranks, one run per size:\n\n"
-             "| grains | us per particle-step (wall) | relative to 2 000 grains |\n|---:|---:|---:|\n")
-    first = None
-    for nx, ny, nz in grids:
-        work = os.path.join(OUT, "part3", f"cycle-{nx}{ny}{nz}")
+        grids.update({"4x2x2": (4, 2, 2), "4x4x2": (4, 4, 2)})
+
+    def run_size(name, grid, r):
+        nx, ny, nz = grid
+        work = os.path.join(OUT, "part3", f"cycle-{name}-{r}")
         log = engines.run(ctx.lammps, 2, os.path.join(HERE, "in.cycle.lammps"), work,
                           "log.lammps", {"side": "wet", "plugin": PLUGIN, "data": data,
                                          "nx": nx, "ny": ny, "nz": nz, "steps": 1000})
-        loop = engines.loops(log)[-1]
-        us = loop.us_per_particle_step()
-        first = first or us
-        print(f"  {loop.atoms} grains: {us:.3f} us per particle-step", flush=True)
-        text += f"| {loop.atoms} | {us:.3f} | {us / first:.2f} |\n"
+        return engines.loops(log)[-1]
+
+    # The sizes alternate like the sides of the other parts: one run per size had read
+    # 0.42 us at 2 000 grains against 0.21-0.25 above, a slow phase of the machine.
+    sizes = alternate(grids, ctx.repeats, run_size)
+    first = median_us(sizes["1x1x1"])
+    text += ("Cyclic compression scene, wet (gran/capillary, law richefeu), the base packing "
+             f"replicated; 1000 steps (half a cycle), 2 ranks; {ctx.repeats} repeats, the sizes "
+             "alternating:\n\n| grains | us per particle-step (wall, median) | min-max | "
+             "relative to 2 000 grains |\n|---:|---:|---:|---:|\n")
+    for name in grids:
+        us = [loop.us_per_particle_step() for loop in sizes[name]]
+        text += (f"| {sizes[name][0].atoms} | {statistics.median(us):.3f} | "
+                 f"{min(us):.3f}-{max(us):.3f} | {statistics.median(us) / first:.2f} |\n")
     text += "\n"
     summary = (f"MPI: split-bottom {'smoke' if ctx.quick else 'default'} 2 ranks / 1 rank "
                f"speed-up **{speedup:.2f}** ({100 * speedup / 2:.0f} % efficiency)")
@@ -352,6 +362,7 @@ def part4(ctx):
     # at time steps 1e-4 apart (a systematic change far below any shown here) measure that
     # scatter, and each time step's error is its replicas' mean against the smallest step's.
     post = uniaxial_post()
+    prepare = 0.095     # the sample's preparation time step / t_c, passed to the deck
     fractions = [0.1, 0.05] if ctx.quick else [0.1, 0.05, 0.025, 0.01]
     replicas = 2 if ctx.quick else 5
     deck_dir = os.path.join(TOP, "inputs", "uniaxial")
@@ -363,7 +374,8 @@ def part4(ctx):
             work = os.path.join(OUT, "part4", f"uniaxial-dt{frac:g}-{k}")
             log = engines.run(ctx.lammps, 2, os.path.join(deck_dir, "in.lammps"), work,
                               "log.lammps", {"size": "smoke", "inputs": deck_dir,
-                                             "plugin": PLUGIN, "dtcompress": repr(dtcompress)})
+                                             "plugin": PLUGIN, "dtfrac": repr(prepare),
+                                             "dtcompress": repr(dtcompress)})
             walls.append(engines.loops(log)[-1].seconds)    # the compression, the last run
             sigmas.append(post.strength(post.read_curve(work)[:, 3]))
         print(f"  dt = t_c x {frac:g}: sigma_rupt {' '.join(f'{x:.1f}' for x in sigmas)} Pa, "
@@ -376,7 +388,7 @@ def part4(ctx):
         return 100 * (sigma - reference) / reference
 
     text += ("\nUniaxial compression, smoke size (600 spheres, w = 2 %, Protocol 1, LAMMPS, 2 "
-             "ranks): one sample, prepared at dt = 0.095 t_c in every run (the same pour, "
+             f"ranks): one sample, prepared at dt = {prepare:g} t_c in every run (the same pour, "
              "bridges and relaxation), compressed at time steps from 1/10 to "
              f"1/{round(1 / fractions[-1])} of the contact time t_c = pi sqrt(m_min/k_n) "
              f"(the deck's dtcompress), {replicas} times each at time steps 1e-4 apart: the "
@@ -405,12 +417,12 @@ PARTS = {1: part1, 2: part2, 3: part3, 4: part4}
 
 
 def assemble():
-    """bench/README.md: the head, then every part measured so far, then their summaries."""
+    """bench/README.md: the head, then every part's latest results, then their summaries."""
     with open(os.path.join(HERE, "README.head.md")) as f:
         text = f.read()
     summaries = []
     for part in sorted(PARTS):
-        path = os.path.join(OUT, f"part{part}.md")
+        path = os.path.join(RESULTS, f"part{part}.md")
         if os.path.isfile(path):
             with open(path) as f:
                 body = f.read()
@@ -498,16 +510,20 @@ def main():
         ctx.repeats = args.repeats or 4
         compare(ctx, a, b, args.side)
         return
+    results = os.path.join(OUT, "quick") if ctx.quick else RESULTS
+    os.makedirs(results, exist_ok=True)
     for part in parts:
         print(f"bench: part {part}", flush=True)
         text, summary = PARTS[part](ctx)
-        with open(os.path.join(OUT, f"part{part}.md"), "w") as f:
+        with open(os.path.join(results, f"part{part}.md"), "w") as f:
             f.write(text + f"\n<!-- summary: {summary} -->\n")
         print(text, flush=True)
+    if ctx.quick:
+        print(f"bench: --quick: wrote {results}; bench/README.md left as it is")
+        return
     for line in assemble():
         print("bench: " + line)
     print(f"bench: wrote {os.path.join(HERE, 'README.md')}")
-
 
 if __name__ == "__main__":
     main()
