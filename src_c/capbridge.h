@@ -165,6 +165,10 @@ cb_status cb_law_init(cb_law *law, cb_model model, double surface_tension, doubl
  * On error, msg names the keyword, the value and what is allowed. */
 cb_status cb_law_configure(cb_law *law, const char *keyword, const char *value, cb_message *msg);
 
+/* 1 when two laws give the same forces and rupture distances: the same model and
+ * parameters, a default rupture rule taken as the rule it stands for (prepared or not). */
+int cb_law_same(const cb_law *a, const cb_law *b);
+
 /* Derive the per-law constants; for the table law, build its table (allocates).
  * Must be called after the last change and before any force call. */
 cb_status cb_law_prepare(cb_law *law, cb_message *msg);

@@ -190,6 +190,19 @@ static cb_rupture_rule default_rupture(cb_model model)
     }
 }
 
+int cb_law_same(const cb_law *a, const cb_law *b)
+{
+    if (!a || !b) return 0;
+    cb_rupture_rule rule_a = a->rupture == CB_RUPTURE_DEFAULT ? default_rupture(a->model)
+                                                              : a->rupture;
+    cb_rupture_rule rule_b = b->rupture == CB_RUPTURE_DEFAULT ? default_rupture(b->model)
+                                                              : b->rupture;
+    return a->model == b->model && a->surface_tension == b->surface_tension &&
+           a->contact_angle == b->contact_angle && rule_a == rule_b &&
+           a->overlap == b->overlap && a->validity == b->validity &&
+           (a->model != CB_MODEL_RICHEFEU || a->richefeu_c == b->richefeu_c);
+}
+
 cb_status cb_law_prepare(cb_law *law, cb_message *msg)
 {
     if (!law) return cb_fail(msg, CB_ERR_NULL, "law is NULL");

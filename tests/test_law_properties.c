@@ -6,7 +6,8 @@
  *   rupture distance; it is 0 beyond; the stiffness is finite, <= 0, and 0 in overlap and
  *   beyond rupture.
  * Then the error paths (NaN, Inf, non-positive radius or volume, theta >= 90 deg), strict
- * validity, the rupture-volume inverse, the stiffness bound, and the keyword messages.
+ * validity, the rupture-volume inverse, the stiffness bound, the keyword messages and
+ * cb_law_same.
  *
  * Laws covered: CB_MODEL_RICHEFEU .. LAST_MODEL. The table law joins by setting LAST_MODEL
  * to CB_MODEL_TABLE (each law is prepared once per contact angle, as the table needs).
@@ -357,6 +358,39 @@ static void test_configure_messages(void)
     CHECK(law.rupture == CB_RUPTURE_WILLETT);
 }
 
+/* ------------------------------------------------------------- same law */
+
+/* cb_law_same: by value (how a keyword was spelled does not matter), the default rupture
+ * rule taken as the rule it stands for, prepared or not */
+static void test_same_law(void)
+{
+    cb_law a, b;
+    cb_message msg;
+    CHECK_STATUS(cb_law_init(&a, CB_MODEL_RICHEFEU, 0.0728, 0.0), CB_OK);
+    CHECK_STATUS(cb_law_init(&b, CB_MODEL_RICHEFEU, 0.0728, 0.0), CB_OK);
+    CHECK_STATUS(cb_law_configure(&b, "gamma", "7.28e-2", &msg), CB_OK);
+    CHECK_STATUS(cb_law_configure(&b, "theta", "0", &msg), CB_OK);
+    CHECK_STATUS(cb_law_configure(&b, "c", "0.9", &msg), CB_OK);
+    CHECK_STATUS(cb_law_configure(&b, "rupture", "lian", &msg), CB_OK);
+    CHECK(cb_law_same(&a, &b) && cb_law_same(&b, &a));
+    CHECK_STATUS(cb_law_prepare(&a, &msg), CB_OK);
+    CHECK(cb_law_same(&a, &b));
+    CHECK_STATUS(cb_law_configure(&b, "rupture", "willett", &msg), CB_OK);
+    CHECK(!cb_law_same(&a, &b));
+    CHECK_STATUS(cb_law_configure(&b, "rupture", "default", &msg), CB_OK);
+    CHECK_STATUS(cb_law_configure(&b, "c", "0.8", &msg), CB_OK);
+    CHECK(!cb_law_same(&a, &b));
+    CHECK_STATUS(cb_law_init(&b, CB_MODEL_RICHEFEU, 0.0728, 1e-9), CB_OK);
+    CHECK(!cb_law_same(&a, &b));
+    CHECK_STATUS(cb_law_init(&b, CB_MODEL_SOULIE, 0.0728, 0.0), CB_OK);
+    CHECK(!cb_law_same(&a, &b));
+    CHECK_STATUS(cb_law_init(&b, CB_MODEL_RICHEFEU, 0.0728, 0.0), CB_OK);
+    CHECK_STATUS(cb_law_configure(&b, "overlap", "none", &msg), CB_OK);
+    CHECK(!cb_law_same(&a, &b));
+    CHECK(!cb_law_same(&a, NULL) && !cb_law_same(NULL, &a));
+    cb_law_release(&a);
+}
+
 /* ---------------------------------------------------------- strict validity */
 
 static void test_strict_validity(void)
@@ -514,6 +548,7 @@ int main(int argc, char **argv)
     test_extreme_scales();
     test_errors();
     test_configure_messages();
+    test_same_law();
     test_strict_validity();
     test_rupture_inverse();
     test_stiffness_bound();

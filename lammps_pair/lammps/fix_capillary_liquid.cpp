@@ -33,8 +33,10 @@
 #include "neighbor.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -64,10 +66,18 @@ FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
   start_free = 0;
   water = liquid_density = liquid_given = vmax_given = -1.0;
   int iarg = 4;
-  if (mode == PairGranCapillary::LIQUID_FIXED && iarg < narg && utils::is_double(arg[iarg])) {
+  static const char *const keywords[] = {"water", "liquid", "every", "start", "vmax"};
+  const bool is_keyword =
+      iarg < narg && std::any_of(std::begin(keywords), std::end(keywords),
+                                 [&](const char *k) { return strcmp(arg[iarg], k) == 0; });
+  if (mode == PairGranCapillary::LIQUID_FIXED && iarg < narg && !is_keyword) {
+    if (!utils::is_double(arg[iarg]))
+      error->all(FLERR, "fix capillary/liquid fixed: volume '{}' is not a number (the bridge "
+                 "volume, >= 0, in volume units; or leave it out to use pair_coeff's)",
+                 arg[iarg]);
     fixed_volume = utils::numeric(FLERR, arg[iarg], false, lmp);
     if (!(fixed_volume >= 0.0))
-      error->all(FLERR, "fix capillary/liquid fixed: volume = {}: must be >= 0 (m^3)", arg[iarg]);
+      error->all(FLERR, "fix capillary/liquid fixed: volume = {}: must be >= 0 (volume units)", arg[iarg]);
     iarg++;
   }
   const bool protocol = mode != PairGranCapillary::LIQUID_FIXED;
@@ -92,7 +102,7 @@ FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR, "fix capillary/liquid: water content {}: must be >= 0 (mass of "
                    "liquid over mass of solid)", arg[iarg + 1]);
       if (!(liquid_density > 0.0))
-        error->all(FLERR, "fix capillary/liquid: liquid density {}: must be > 0 (kg/m^3)",
+        error->all(FLERR, "fix capillary/liquid: liquid density {}: must be > 0 (mass/volume units)",
                    arg[iarg + 2]);
       iarg += 3;
     } else if (strcmp(key, "liquid") == 0) {
@@ -101,7 +111,7 @@ FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
       liquid_given = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (!(liquid_given >= 0.0))
         error->all(FLERR, "fix capillary/liquid: liquid {}: the total liquid volume must be "
-                   ">= 0 (m^3)", arg[iarg + 1]);
+                   ">= 0 (volume units)", arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(key, "every") == 0) {
       if (mode != PairGranCapillary::LIQUID_PROTOCOL1)
@@ -129,7 +139,7 @@ FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
       need(1, key);
       vmax_given = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (!(vmax_given > 0.0))
-        error->all(FLERR, "fix capillary/liquid: vmax {}: must be > 0 (m^3)", arg[iarg + 1]);
+        error->all(FLERR, "fix capillary/liquid: vmax {}: must be > 0 (volume units)", arg[iarg + 1]);
       iarg += 2;
     } else
       error->all(FLERR, "fix capillary/liquid: unknown keyword '{}': allowed water, liquid, "
@@ -137,12 +147,14 @@ FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
   }
   if (protocol && (water < 0.0) == (liquid_given < 0.0))
     error->all(FLERR, "fix capillary/liquid {}: give the liquid once: 'water W RHO' (mass "
-               "fraction, liquid density) or 'liquid V' (m^3)", mode_name());
+               "fraction, liquid density) or 'liquid V' (volume units)", mode_name());
 
   vector_flag = 1;
   size_vector = 8;
   global_freq = 1;
-  extvector = 0;
+  // counts and volumes are sums over the atoms (extensive); z and the relative change not
+  extvector = -1;
+  extlist = new int[8]{1, 0, 1, 1, 1, 1, 1, 0};
   restart_global = 1;
 
   if (mode == PairGranCapillary::LIQUID_PROTOCOL2 || mode == PairGranCapillary::LIQUID_PROTOCOL3) {
@@ -165,6 +177,9 @@ FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
   started = 0;
   last_distribution = -1;
   for (double &v : values) v = 0.0;
+  formed = ruptured = 0.0;
+  total_at_run_end = -1.0;
+  total_from_restart = 0;
   census_step = -1;
   census_valid = 0;
   warned_nowhere = warned_reach = 0;
@@ -175,6 +190,7 @@ FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
 FixCapillaryLiquid::~FixCapillaryLiquid()
 {
   if (copymode) return;
+  delete[] extlist;
   if (free_liquid) {
     atom->delete_callback(id, Atom::GROW);
     atom->delete_callback(id, Atom::RESTART);
@@ -215,11 +231,17 @@ void FixCapillaryLiquid::init()
 void FixCapillaryLiquid::ensure_totals()
 {
   if (mode == PairGranCapillary::LIQUID_FIXED) return;
-  if (total_liquid < 0.0) {
-    if (water >= 0.0)
-      total_liquid = water * group->mass(igroup) / liquid_density;
-    else
-      total_liquid = liquid_given;
+  if (total_liquid < 0.0 || total_from_restart) {
+    const double asked =
+        water >= 0.0 ? water * group->mass(igroup) / liquid_density : liquid_given;
+    if (total_liquid < 0.0)
+      total_liquid = asked;
+    else if (fabs(asked - total_liquid) > 1e-9 * MAX(asked, total_liquid) && comm->me == 0)
+      error->warning(FLERR, "fix capillary/liquid {}: the restart file's total liquid {:.6g} "
+                     "is kept (the liquid is conserved from the first run on); this fix's "
+                     "{} asks for {:.6g}, which is not applied", mode_name(), total_liquid,
+                     water >= 0.0 ? "water content" : "liquid", asked);
+    total_from_restart = 0;
   }
   if (vmax_given > 0.0) vmax = vmax_given;
   if (vmax < 0.0) {
@@ -259,7 +281,27 @@ void FixCapillaryLiquid::setup_pre_force(int /*vflag*/)
     started = 1;
     return;
   }
+  if (total_at_run_end >= 0.0 && free_liquid) {
+    // Protocols 2, 3 keep their liquid in the bridges and the atoms: whatever changed it
+    // between two runs took liquid with it
+    census();
+    const double change = values[4] - total_at_run_end;
+    if (fabs(change) > 1e-9 * total_liquid && comm->me == 0)
+      error->warning(FLERR, "fix capillary/liquid {}: the liquid changed by {:.6g} ({:+.3g} of "
+                     "the total) between two runs: atoms deleted with their free liquid and "
+                     "bridges, or atom IDs renumbered (delete_atoms with compress yes, "
+                     "reset_atoms id), which drops the bridges of the renumbered atoms (the "
+                     "pair history is kept per pair of atom IDs)", mode_name(), change,
+                     change / total_liquid);
+  }
   pre_force(0);
+}
+
+void FixCapillaryLiquid::post_run()
+{
+  if (mode == PairGranCapillary::LIQUID_FIXED) return;
+  census();
+  total_at_run_end = values[4];
 }
 
 void FixCapillaryLiquid::pre_force(int /*vflag*/)
@@ -277,16 +319,37 @@ void FixCapillaryLiquid::pre_force(int /*vflag*/)
 
 void FixCapillaryLiquid::start_liquid()
 {
+  // Bridges may exist before the liquid starts: from runs with fixed volumes, or from a
+  // restart file whose fix had another ID (its state not handed to this fix).  They are
+  // part of the total: Protocol 1 distributes the total anew over the pairs, and free
+  // liquid is what the bridges do not hold.
+  census();
+  const double held = values[2];
+  if (held > 0.0 && comm->me == 0)
+    error->warning(FLERR, "fix capillary/liquid {}: {:.0f} bridges holding {:.6g} exist at the "
+                   "start of the liquid (an earlier run, or a restart file with another fix "
+                   "ID); they are part of the total liquid {:.6g}: {}", mode_name(), values[0],
+                   held, total_liquid,
+                   mode == PairGranCapillary::LIQUID_PROTOCOL1 || !start_free
+                       ? "the total is distributed anew over the pairs"
+                       : "the free liquid is the rest");
   if (mode == PairGranCapillary::LIQUID_PROTOCOL1 || !start_free) {
     distribute("start");
     if (mode == PairGranCapillary::LIQUID_PROTOCOL1 || last_distribution == update->ntimestep)
       return;
   }
-  // Protocols 2, 3: the liquid as free liquid, in proportion to the atoms' masses
+  // Protocols 2, 3: the liquid as free liquid, in proportion to the atoms' masses (what a
+  // failed distribution left in the bridges stays there)
+  census();
+  const double rest = total_liquid - values[2];
+  if (rest < -1e-12 * total_liquid)
+    error->all(FLERR, "fix capillary/liquid {}: the bridges that exist at the start hold "
+               "{:.6g}, more than the total liquid {:.6g}: give at least that much liquid",
+               mode_name(), values[2], total_liquid);
   const double mass = group->mass(igroup);
   if (mass > 0.0)
     for (int i = 0; i < atom->nlocal; i++)
-      if (atom->mask[i] & groupbit) free_liquid[i] = total_liquid * (atom->rmass[i] / mass);
+      if (atom->mask[i] & groupbit) free_liquid[i] = MAX(rest, 0.0) * (atom->rmass[i] / mass);
   pool = 0.0;
 }
 
@@ -309,7 +372,7 @@ void FixCapillaryLiquid::distribute(const char *why)
   if (nowhere) {
     if (!warned_nowhere && comm->me == 0)
       error->warning(FLERR, "fix capillary/liquid {} ({}, step {}): no pair can hold the liquid "
-                     "({:.6g} m^3): {}; this warning is given once", mode_name(), why,
+                     "({:.6g} volume units): {}; this warning is given once", mode_name(), why,
                      update->ntimestep, total_liquid,
                      mode == PairGranCapillary::LIQUID_PROTOCOL1
                          ? "it stays in the pool until a distribution succeeds"
@@ -326,7 +389,7 @@ void FixCapillaryLiquid::distribute(const char *why)
 /* ----------------------------------------------------------------------
    output: 1 bridges, 2 bridge coordination number z = 2 bridges / atoms in the group,
    3 liquid in bridges, 4 free liquid (per-atom free liquid and the Protocol 1 pool),
-   5 total liquid (3 + 4), 6 formations and 7 ruptures since the last output,
+   5 total liquid (3 + 4), 6 formations and 7 ruptures since the fix was defined,
    8 relative change of the total since the start ((5 - total) / total; 0 in mode fixed)
 ------------------------------------------------------------------------- */
 
@@ -346,8 +409,10 @@ void FixCapillaryLiquid::census()
   values[2] = global[1];
   values[3] = free_total;
   values[4] = total;
-  values[5] = global[2];
-  values[6] = global[3];
+  formed += global[2];
+  ruptured += global[3];
+  values[5] = formed;
+  values[6] = ruptured;
   values[7] = (mode != PairGranCapillary::LIQUID_FIXED && total_liquid > 0.0)
       ? (total - total_liquid) / total_liquid
       : 0.0;
@@ -355,7 +420,7 @@ void FixCapillaryLiquid::census()
     warned_reach = 1;
     if (comm->me == 0)
       error->warning(FLERR, "fix capillary/liquid: {} bridge(s) ruptured at the neighbor reach "
-                     "(built for bridge volumes up to {:.6g} m^3) before their rupture distance; "
+                     "(built for bridge volumes up to {:.6g} volume units) before their rupture distance; "
                      "their liquid is kept; raise vmax; this warning is given once",
                      global[4], vmax);
   }
@@ -399,6 +464,7 @@ void FixCapillaryLiquid::restart(char *buf)
     error->all(FLERR, "fix capillary/liquid: the restart file holds mode {}, the input script "
                "gives {}", mode_names[(int) list[0]], mode_name());
   total_liquid = list[1];
+  total_from_restart = 1;
   vmax = vmax_given > 0.0 ? vmax_given : list[2];
   pool = list[3];
   alpha = list[4];

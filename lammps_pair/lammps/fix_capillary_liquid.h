@@ -5,7 +5,7 @@
    (given, or from a water content) distributed by Richefeu et al. 2007's Protocol 1
    (every N steps), 2 or 3 (per-atom free liquid).  Global output vector: bridges,
    bridge coordination number, liquid in bridges, free liquid, total liquid, formations
-   and ruptures since the last output, relative change of the total.
+   and ruptures since the fix was defined, relative change of the total.
    See doc/fix_capillary_liquid.rst.
 ------------------------------------------------------------------------- */
 
@@ -31,6 +31,7 @@ class FixCapillaryLiquid : public Fix {
   int setmask() override;
   void init() override;
   void setup_pre_force(int) override;
+  void post_run() override;
   void pre_force(int) override;
   double compute_vector(int) override;
 
@@ -70,6 +71,9 @@ class FixCapillaryLiquid : public Fix {
 
   // output
   double values[8];
+  double formed, ruptured;     // bridges formed, ruptured since the fix was defined
+  double total_at_run_end;     // the total liquid at the end of the last run (< 0: none)
+  int total_from_restart;      // total_liquid was read from a restart file, not yet checked
   bigint census_step;
   int census_valid, warned_nowhere, warned_reach;
 

@@ -42,6 +42,7 @@
 
 #include "atom.h"
 #include "citeme.h"
+#include "domain.h"
 #include "comm.h"
 #include "error.h"
 #include "fix.h"
@@ -168,10 +169,17 @@ PairGranCapillary::PairGranCapillary(LAMMPS *lmp) : Pair(lmp)
 
   if (lmp->citeme) lmp->citeme->add(cite_capbridge);
 
+  // One instance at a time: its history fix has a fixed ID (history_id), and fix
+  // capillary/liquid serves one pair style.
+  if (modify->get_fix_by_id(dummy_id) || modify->get_fix_by_id(history_id(SIZE_BRIDGE)) ||
+      modify->get_fix_by_id(history_id(SIZE_CONTACT)))
+    error->all(FLERR, "pair gran/capillary can be used once: as the pair style, or as one "
+               "sub-style of pair_style hybrid/overlay (its pair history and fix "
+               "capillary/liquid belong to one instance)");
   // a placeholder keeps the fix order of the input script until init_style() puts the
   // NEIGH_HISTORY fix in its place (the same scheme as LAMMPS's granular styles)
   fix_dummy = dynamic_cast<FixDummy *>(
-      modify->add_fix("NEIGH_HISTORY_CAPILLARY_DUMMY" + std::to_string(instance_me) + " all DUMMY"));
+      modify->add_fix(dummy_id + " all DUMMY"));
 }
 
 /* ---------------------------------------------------------------------- */
@@ -183,7 +191,7 @@ PairGranCapillary::~PairGranCapillary()
   svector = nullptr;
 
   if (!fix_history)
-    modify->delete_fix("NEIGH_HISTORY_CAPILLARY_DUMMY" + std::to_string(instance_me));
+    modify->delete_fix(dummy_id);
   else
     modify->delete_fix(history_id(history_size));
 
@@ -325,12 +333,12 @@ void PairGranCapillary::parse_coeff(int ilo, int ihi, int jlo, int jhi, int narg
     contact_one = 0;
     iarg = 2;
   } else {
-    kn_one = number(0, "kn", "normal stiffness, N/m");
-    kt_one = number(1, "kt", "tangential stiffness, N/m");
+    kn_one = number(0, "kn", "normal stiffness, force/distance");
+    kt_one = number(1, "kt", "tangential stiffness, force/distance");
     damping_one = number(2, "damping", "normal damping rate alpha_n, 0..1");
     mu_one = number(3, "mu", "friction coefficient");
-    if (kn_one < 0.0) error->all(FLERR, "{}: kn = {}: must be >= 0 (N/m)", where, kn_one);
-    if (kt_one < 0.0) error->all(FLERR, "{}: kt = {}: must be >= 0 (N/m)", where, kt_one);
+    if (kn_one < 0.0) error->all(FLERR, "{}: kn = {}: must be >= 0 (force/distance)", where, kn_one);
+    if (kt_one < 0.0) error->all(FLERR, "{}: kt = {}: must be >= 0 (force/distance)", where, kt_one);
     if (damping_one < 0.0 || damping_one > 1.0)
       error->all(FLERR, "{}: damping = {}: the damping rate alpha_n must lie in [0, 1] "
                  "(Richefeu 2007 eq. 3)", where, damping_one);
@@ -362,10 +370,10 @@ void PairGranCapillary::parse_coeff(int ilo, int ihi, int jlo, int jhi, int narg
     const char *value = arg[iarg + 1];
     if (strcmp(key, "volume") == 0) {
       if (!utils::is_double(value))
-        error->all(FLERR, "{}: volume '{}' must be a number (m^3)", where, value);
+        error->all(FLERR, "{}: volume '{}' must be a number (volume units)", where, value);
       volume_one = utils::numeric(FLERR, value, false, lmp);
       if (!(volume_one >= 0.0) || !std::isfinite(volume_one))
-        error->all(FLERR, "{}: volume = {}: the bridge volume must be >= 0 (m^3; 0 = no "
+        error->all(FLERR, "{}: volume = {}: the bridge volume must be >= 0 (volume units; 0 = no "
                    "bridges for these types)", where, value);
     } else {
       cb_message msg;
@@ -378,13 +386,14 @@ void PairGranCapillary::parse_coeff(int ilo, int ihi, int jlo, int jhi, int narg
     iarg += 2;
   }
   if (!have_gamma)
-    error->all(FLERR, "{}: law {} needs 'gamma' (the surface tension, N/m)", where,
+    error->all(FLERR, "{}: law {} needs 'gamma' (the surface tension, force/distance)", where,
                cb_model_name(model));
 
-  // one prepared law per distinct specification
+  // one prepared law per distinct law (by value: 'gamma 0.0728' and 'gamma 7.28e-2 theta 0'
+  // are one law)
   int index = -1;
-  for (size_t k = 0; k < law_text.size(); k++)
-    if (law_text[k] == spec) index = (int) k;
+  for (size_t k = 0; k < laws.size(); k++)
+    if (cb_law_same(laws[k], &one)) index = (int) k;
   if (index < 0) {
     cb_message msg;
     msg.text[0] = '\0';
@@ -450,7 +459,7 @@ void PairGranCapillary::init_style()
       if (!setflag[i][j]) continue;
       if (liquid_mode == LIQUID_FIXED) {
         if (volume[i][j] < 0.0 && !(fix_liquid && fix_liquid->fixed_volume >= 0.0))
-          error->all(FLERR, "pair_coeff {} {}: no bridge volume: give 'volume V' (m^3) or "
+          error->all(FLERR, "pair_coeff {} {}: no bridge volume: give 'volume V' (volume units) or "
                      "define fix capillary/liquid", i, j);
       } else if (volume[i][j] > 0.0) {
         error->all(FLERR, "pair_coeff {} {}: volume {} conflicts with fix capillary/liquid "
@@ -466,7 +475,7 @@ void PairGranCapillary::init_style()
       for (int j = i; j <= n; j++)
         if (setflag[i][j] && volume[i][j] != 0.0) {
           if (first < 0) first = law_of[i][j];
-          else if (law_text[law_of[i][j]] != law_text[first])
+          else if (law_of[i][j] != first)
             error->all(FLERR, "fix capillary/liquid {}: every wet type pair must use the same "
                        "law (Protocol 1 distributes over all pairs with one law): '{}' and '{}'",
                        fix_liquid->mode_name(), law_text[first], law_text[law_of[i][j]]);
@@ -511,8 +520,11 @@ void PairGranCapillary::init_style()
 
 std::string PairGranCapillary::history_id(int size) const
 {
-  return fmt::format("NEIGH_HISTORY_CAPILLARY{}{}", size == SIZE_CONTACT ? "_CONTACT" : "",
-                     instance_me);
+  // Not Pair::instance_me, a count of pair styles made in this process that `clear` does
+  // not reset: after `clear` and `read_restart` the history would not be handed back (the
+  // bridges lost).  The 0 is the count of the first pair style, the ID restart files
+  // written before carry.  One instance at a time (the constructor).
+  return fmt::format("NEIGH_HISTORY_CAPILLARY{}0", size == SIZE_CONTACT ? "_CONTACT" : "");
 }
 
 /* ----------------------------------------------------------------------
@@ -528,7 +540,7 @@ void PairGranCapillary::create_history()
     if (history_size == 0) history_size = bridges_possible ? SIZE_BRIDGE : SIZE_CONTACT;
     auto cmd = fmt::format("{} all NEIGH_HISTORY {}", history_id(history_size), history_size);
     fix_history = dynamic_cast<FixNeighHistory *>(modify->replace_fix(
-        "NEIGH_HISTORY_CAPILLARY_DUMMY" + std::to_string(instance_me), cmd, 1));
+        dummy_id, cmd, 1));
     fix_history->pair = this;
   }
   fix_history =
@@ -681,7 +693,7 @@ double PairGranCapillary::max_rupture(int itype, int jtype, double vol) const
       int status = cb_rupture_distance(&extend, r1, r2, vol, &d);
       if (status != CB_OK)
         error->all(FLERR, "pair gran/capillary: types {} {}: law {} has no rupture distance for "
-                   "a bridge of {} m^3 between radii {} and {} m: {}", itype, jtype,
+                   "a bridge of volume {} between radii {} and {}: {}", itype, jtype,
                    cb_model_name(extend.model), vol, r1, r2,
                    cb_status_message((cb_status) status));
       largest = MAX(largest, d);
@@ -800,8 +812,8 @@ int PairGranCapillary::wet_pair(int i, int j, const TypePair &tp) const
 void PairGranCapillary::fail_cb(int status, const char *what, int itype, int jtype, double r1,
                                 double r2, double vol, double gap)
 {
-  error->one(FLERR, "pair gran/capillary: {} failed for types {} {} (law '{}', r1 = {} m, "
-             "r2 = {} m, volume = {} m^3, gap = {} m): {}", what, itype, jtype,
+  error->one(FLERR, "pair gran/capillary: {} failed for types {} {} (law '{}', r1 = {}, "
+             "r2 = {}, volume = {}, gap = {}): {}", what, itype, jtype,
              law_text[law_of[itype][jtype]], r1, r2, vol, gap,
              cb_status_message((cb_status) status));
 }
@@ -831,7 +843,10 @@ void PairGranCapillary::grow_scratch()
 void PairGranCapillary::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
-  if (neighbor->ago == 0) check_timestep();    // at setup and after every re-neighboring
+  if (neighbor->ago == 0) {    // at setup and after every re-neighboring
+    if (bridges_possible) check_periodic_images();
+    check_timestep();
+  }
   if (update->setupflag) derive_bridges();
 
   if (bridges_possible && (liquid_mode == LIQUID_PROTOCOL2 || liquid_mode == LIQUID_PROTOCOL3)) {
@@ -1348,6 +1363,29 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
    again only when a type pair's volume range has changed (in fixed mode: once per run).
 ------------------------------------------------------------------------- */
 
+void PairGranCapillary::check_periodic_images()
+{
+  // The pair history, and with it every bridge, is kept per pair of atom IDs.  In a
+  // periodic box narrower than twice the neighbor cutoff, the same two atoms can meet as
+  // two periodic images in one neighbor list, and each image would get a copy of their
+  // bridge: liquid out of nothing.  Widths between opposite faces (triclinic: 1 / |row of
+  // the inverse box matrix|).
+  const double *h_inv = domain->h_inv;
+  const double width[3] = {
+      1.0 / sqrt(h_inv[0] * h_inv[0] + h_inv[5] * h_inv[5] + h_inv[4] * h_inv[4]),
+      1.0 / sqrt(h_inv[1] * h_inv[1] + h_inv[3] * h_inv[3]), 1.0 / h_inv[2]};
+  const int periodic[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
+  const double cutoff = neighbor->cutneighmax;
+  for (int d = 0; d < 3; d++)
+    if (periodic[d] && width[d] < 2.0 * cutoff)
+      error->all(FLERR, "pair gran/capillary: the periodic box is {:.6g} wide along {}, less "
+                 "than twice the neighbor cutoff {:.6g} (the largest bridge reach plus the "
+                 "skin): two atoms would meet as two periodic images, each holding a copy of "
+                 "their bridge.  Make the box at least {:.6g} wide along {} (or lower the "
+                 "skin, or the bridge volume the reach is built for)",
+                 width[d], "xyz"[d], cutoff, 2.0 * cutoff, "xyz"[d]);
+}
+
 void PairGranCapillary::check_timestep()
 {
   if (dt_warned) return;
@@ -1425,8 +1463,8 @@ void PairGranCapillary::check_timestep()
         if (comm->me == 0)
           error->warning(FLERR, "pair gran/capillary: time step {:.6g} s exceeds the limit "
                          "{:.6g} s = 10% of pi sqrt(m/k) for types {} {} (smallest mass "
-                         "m = {:.6g} kg, k = {:.6g} N/m: the larger of k_n = {:.6g} N/m and "
-                         "the capillary stiffness bound {:.6g} N/m); this warning is given once",
+                         "m = {:.6g}, k = {:.6g}: the larger of k_n = {:.6g} and "
+                         "the capillary stiffness bound {:.6g}); this warning is given once",
                          update->dt, limit, i, j, m, k, contact, capillary);
         return;
       }
@@ -1738,8 +1776,8 @@ int PairGranCapillary::protocol1(double total_liquid, double &alpha, double &lar
       const double design = design_volume(i, j);
       if (largest > design * (1.0 + 1e-12))
         error->all(FLERR, "fix capillary/liquid: Protocol 1 gives alpha = {:.6g}: a bridge between "
-                   "the largest spheres of types {} {} would hold {:.6g} m^3, more than vmax = "
-                   "{:.6g} m^3 that the neighbor reach was built for; raise vmax",
+                   "the largest spheres of types {} {} would hold {:.6g}, more than vmax = "
+                   "{:.6g} that the neighbor reach was built for; raise vmax",
                    alpha, i, j, largest, design);
     }
 

@@ -178,6 +178,7 @@ class PairGranCapillary : public Pair {
   [[noreturn]] void fail_cb(int status, const char *what, int itype, int jtype, double r1,
                             double r2, double vol, double gap);
   std::string history_id(int size) const;
+  const std::string dummy_id = "NEIGH_HISTORY_CAPILLARY_DUMMY";
   void create_history();
   void widen_history();
   void held_volumes();
@@ -196,6 +197,7 @@ class PairGranCapillary : public Pair {
                   double dely, double delz, double rsq, double r, double gap, double capillary,
                   double *history, int &touch, int history_update);
   void exchange_liquid();
+  void check_periodic_images();
   void check_timestep();
   void radius_ranges();
   double max_rupture(int itype, int jtype, double vol) const;

@@ -32,7 +32,7 @@ expect unknown_dashpot "pair_style gran/capillary: dashpot 'sometimes': allowed 
     "gran/capillary dashpot sometimes" "$GOOD"
 expect missing_coefficient "missing coefficient mu \(friction coefficient\) before 'law'" \
     gran/capillary "100 40 0.3 law richefeu gamma 0.0728 volume 1e-12"
-expect missing_gamma "law richefeu needs 'gamma' \(the surface tension, N/m\)" \
+expect missing_gamma "law richefeu needs 'gamma' \(the surface tension, force/distance\)" \
     gran/capillary "100 40 0.3 0.4 law richefeu volume 1e-12"
 expect missing_volume "pair_coeff 1 1: no bridge volume: give 'volume V'" \
     gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728"
@@ -46,6 +46,10 @@ expect damping_range "damping = 1.5: the damping rate alpha_n must lie in \[0, 1
     gran/capillary "100 40 1.5 0.4 law richefeu gamma 0.0728 volume 1e-12"
 expect fix_without_pair "fix capillary/liquid requires pair style gran/capillary" \
     "gran/hooke/history 100 NULL 0 NULL 0.4 0" "" protocol2 "water 0.01 1000"
+expect hybrid_twice "pair gran/capillary can be used once: as the pair style, or as one sub-style of pair_style hybrid/overlay" \
+    "hybrid/overlay gran/capillary gran/capillary" "gran/capillary 1 $GOOD"
+expect fix_fixed_not_a_volume "fix capillary/liquid fixed: volume 'nan' is not a number" \
+    gran/capillary "$GOOD" fixed nan
 expect fix_unknown_keyword "fix capillary/liquid: unknown keyword 'wather'" \
     gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728" protocol2 "wather 0.01 1000"
 expect fix_unknown_mode "fix capillary/liquid: unknown mode 'protocol4'" \
@@ -73,7 +77,7 @@ checks=$((checks + 1))
 lmp 1 "$TMP/dt_capillary.log" -in "$DECKS/in.errors" -var pstyle gran/capillary \
     -var pcoeff "1 0.4 0.3 0.4 law richefeu gamma 0.0728 volume 1e-12" -var dt 1e-3 \
     >/dev/null 2>&1 || fail "capillary time step: LAMMPS failed: $(grep -m1 ERROR "$TMP/dt_capillary.log")"
-bound=$(sed -n 's/.*the capillary stiffness bound \([^ ]*\) N\/m.*/\1/p' "$TMP/dt_capillary.log" | head -1)
+bound=$(sed -n 's/.*the capillary stiffness bound \([^)]*\)).*/\1/p' "$TMP/dt_capillary.log" | head -1)
 at_contact=$("$CB" curve richefeu --r1 1e-3 --r2 1e-3 --volume 1e-12 --points 2 --to 1e-6 |
     awk -F, 'NR == 2 { printf "%.17g", $3 < 0 ? -$3 : $3 }')
 close_rel "capillary time step: the stiffness bound in the warning" "$bound" "$at_contact" 1e-5

@@ -30,14 +30,21 @@ N=100
 compare_runs() {
     checks=$((checks + 1))
     thermo "$1" | awk -v n=$N '$1 > n' >"$TMP/full.rows"
+    thermo "$1" | awk -v n=$N '$1 == n' | head -1 >"$TMP/full.base"
     thermo "$2" | awk -v n=$N '$1 > n' >"$TMP/rest.rows"
-    awk -v label="$5" -v ref="$TMP/full.rows" '
+    awk -v label="$5" -v ref="$TMP/full.rows" -v base="$TMP/full.base" '
     function abs(x) { return x < 0 ? -x : x }
-    BEGIN { while ((getline line < ref) > 0) { split(line, f, " "); row[f[1]] = line; count++ } }
+    BEGIN {
+        while ((getline line < ref) > 0) { split(line, f, " "); row[f[1]] = line; count++ }
+        getline line < base; split(line, b, " ")
+    }
     {
         rows++
         if (!($1 in row)) { printf "%s: no continuous row for step %s\n", label, $1; bad++; next }
         split(row[$1], f, " ")
+        # formations and ruptures count from the definition of the fix: the restarted
+        # run from step n, the continuous one from 0
+        if (NF == 13) { f[8] -= b[8]; f[9] -= b[9] }
         for (k = 2; k <= NF; k++) {
             d = abs($k - f[k]); s = abs(f[k])
             # with the fix (13 columns): 3 bridges, 8 formations, 9 ruptures, 11 bridges by
