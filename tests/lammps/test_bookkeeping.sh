@@ -18,6 +18,12 @@ run_case() {    # run_case CASE [DATA]: LAMMPS's exit status
     lmp 1 "$TMP/$1.log" -in "$DECKS/in.bookkeeping" -var case "$1" \
         -var data "${2:-$TMP/scene.data}" -var out "$TMP/bookkeeping" >/dev/null 2>&1
 }
+run_ok() {    # run_ok CASE [DATA]: LAMMPS ran; else a failure naming its error
+    checks=$((checks + 1))
+    run_case "$@" && return 0
+    fail "$1: LAMMPS failed: $(grep -m1 ERROR "$TMP/$1.log")"
+    return 1
+}
 # printed NAME LOG: the values after "NAME " in the deck's print line
 printed() { sed -n "s/^$1 //p" "$2" | head -1; }
 has() {    # has LABEL LOG PATTERN
@@ -25,8 +31,7 @@ has() {    # has LABEL LOG PATTERN
     grep -Eq "$3" "$2" || fail "$1: no line matching '$3' in $2"
 }
 
-checks=$((checks + 1))
-if run_case clear; then
+if run_ok clear; then
     set -- $(printed BEFORE "$TMP/clear.log")
     bridges=$1 total=$2
     set -- $(printed AFTER "$TMP/clear.log")
@@ -35,34 +40,23 @@ if run_case clear; then
         fail "clear: $bridges bridges before clear, ${1:-none} after read_restart"
     close_rel "clear: total liquid after read_restart" "$2" "$total" 1e-12
     echo "clear: $bridges bridges, total $total, back after clear + read_restart"
-else
-    fail "clear: LAMMPS failed: $(grep -m1 ERROR "$TMP/clear.log")"
 fi
 
-checks=$((checks + 1))
-if run_case existing; then
+if run_ok existing; then
     has existing "$TMP/existing.log" "WARNING: fix capillary/liquid protocol2: [0-9]+ bridges holding .* exist at the start of the liquid"
     set -- $(printed AFTER "$TMP/existing.log")
     close_rel "existing: total liquid with the bridges that existed" "$2" 1e-9 1e-12
     echo "existing: $(grep -m1 'exist at the start' "$TMP/existing.log")"
-else
-    fail "existing: LAMMPS failed: $(grep -m1 ERROR "$TMP/existing.log")"
 fi
 
-checks=$((checks + 1))
-if run_case changed; then
+if run_ok changed; then
     has changed "$TMP/changed.log" "WARNING: fix capillary/liquid protocol2: the restart file's total liquid .* is kept"
     set -- $(printed AFTER "$TMP/changed.log")
     close_rel "changed: the file's total is kept" "$2" "$total" 1e-12
-else
-    fail "changed: LAMMPS failed: $(grep -m1 ERROR "$TMP/changed.log")"
 fi
 
-checks=$((checks + 1))
-if run_case deleted; then
+if run_ok deleted; then
     has deleted "$TMP/deleted.log" "WARNING: fix capillary/liquid protocol2: the liquid changed by -[0-9.e+-]+ .* between two runs"
-else
-    fail "deleted: LAMMPS failed: $(grep -m1 ERROR "$TMP/deleted.log")"
 fi
 
 checks=$((checks + 1))
