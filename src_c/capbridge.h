@@ -81,7 +81,9 @@ typedef enum cb_rupture_rule {
     CB_RUPTURE_DEFAULT = 0,
     CB_RUPTURE_LIAN,     /* Richefeu eq. 6: (1 + theta/2) V^(1/3) */
     CB_RUPTURE_WILLETT,  /* Gladkyy eq. 2: (1 + theta/2)(V*^(1/3) + V*^(2/3)/10) R_h */
-    CB_RUPTURE_EXACT     /* the fold of the exact Laplace-Young branch (table law only) */
+    CB_RUPTURE_EXACT,    /* the fold of the exact Laplace-Young branch (table law only) */
+    CB_RUPTURE_WILLETT_UNEQUAL /* Willett 2000 for unequal spheres (rupture.c): eq. 2 at
+                                * equal radii, within 7 % of the exact fold up to 10:1 */
 } cb_rupture_rule;
 
 /* What the force is while the spheres overlap (gap < 0). */
@@ -158,7 +160,7 @@ cb_status cb_law_init(cb_law *law, cb_model model, double surface_tension, doubl
 /* Keyword interface shared by the CLI and the engine bindings. Keywords:
  *   gamma <N/m>                surface tension (> 0)
  *   theta <degrees>            contact angle, 0 <= theta < 90
- *   rupture lian|willett|default
+ *   rupture lian|willett|willett/unequal|default
  *   overlap contact|none
  *   validity extend|strict
  *   c <value>                  Richefeu's constant (richefeu only, > 0)

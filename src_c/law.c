@@ -148,11 +148,12 @@ static cb_status apply_keyword(cb_law *law, const char *keyword, const char *val
         if (strcmp(value, "default") == 0) law->rupture = CB_RUPTURE_DEFAULT;
         else if (strcmp(value, "lian") == 0) law->rupture = CB_RUPTURE_LIAN;
         else if (strcmp(value, "willett") == 0) law->rupture = CB_RUPTURE_WILLETT;
+        else if (strcmp(value, "willett/unequal") == 0) law->rupture = CB_RUPTURE_WILLETT_UNEQUAL;
         else if (strcmp(value, "exact") == 0 && law->model == CB_MODEL_TABLE)
             law->rupture = CB_RUPTURE_EXACT;
         else
             return cb_fail(msg, CB_ERR_UNKNOWN_KEYWORD,
-                           "rupture '%s': allowed lian, willett, default%s", value,
+                           "rupture '%s': allowed lian, willett, willett/unequal, default%s", value,
                            law->model == CB_MODEL_TABLE ? ", exact" : "");
         return CB_OK;
     }
@@ -297,6 +298,7 @@ static double rupture_of(const cb_law *law, const cb_pair *pair)
     switch (law->rupture_in_use) {
     case CB_RUPTURE_LIAN: return cb_rupture_lian(law, pair);
     case CB_RUPTURE_WILLETT: return cb_rupture_willett(law, pair);
+    case CB_RUPTURE_WILLETT_UNEQUAL: return cb_rupture_willett_unequal(law, pair);
     case CB_RUPTURE_EXACT:
     default: return cb_table_rupture(law, pair);
     }
@@ -337,6 +339,7 @@ cb_status cb_rupture_volume(const cb_law *law, double r1, double r2, double gap,
     switch (law->rupture_in_use) {
     case CB_RUPTURE_LIAN: v = cb_rupture_volume_lian(law, &pair, gap); break;
     case CB_RUPTURE_WILLETT: v = cb_rupture_volume_willett(law, &pair, gap); break;
+    case CB_RUPTURE_WILLETT_UNEQUAL: v = cb_rupture_volume_willett_unequal(law, &pair, gap); break;
     case CB_RUPTURE_EXACT:
     default: v = cb_table_rupture_volume(law, &pair, gap); break;
     }

@@ -77,8 +77,10 @@ cb_validity cb_table_validity(const cb_law *law);
 /* Rupture rules (rupture.c), for a prepared law. */
 double cb_rupture_lian(const cb_law *law, const cb_pair *pair);
 double cb_rupture_willett(const cb_law *law, const cb_pair *pair);
+double cb_rupture_willett_unequal(const cb_law *law, const cb_pair *pair);
 double cb_rupture_volume_lian(const cb_law *law, const cb_pair *pair, double gap);
 double cb_rupture_volume_willett(const cb_law *law, const cb_pair *pair, double gap);
+double cb_rupture_volume_willett_unequal(const cb_law *law, const cb_pair *pair, double gap);
 
 /* The table law (law_table.c). */
 cb_status cb_table_create(double contact_angle, struct cb_table **table, cb_message *msg);

@@ -464,9 +464,9 @@ static void test_strict_validity(void)
 
 static void test_rupture_inverse(void)
 {
-    const char *rules[] = {"lian", "willett"};
+    const char *rules[] = {"lian", "willett", "willett/unequal"};
     int n = 0;
-    for (int i = 0; i < 2; ++i) {
+    for (int i = 0; i < 3; ++i) {
         for (size_t a = 0; a < N_THETAS; ++a) {
             cb_law law;
             cb_message msg;
@@ -496,7 +496,30 @@ static void test_rupture_inverse(void)
             CHECK(zero == 0.0);
         }
     }
-    printf("rupture inverse: %d round trips (lian, willett)\n", n);
+    /* willett/unequal beyond the maximum of its quadratic (size ratio 10: at V* = 2.92,
+     * far beyond the stated V* < 0.1): still rising with the volume, continuous, inverted */
+    {
+        cb_law law;
+        cb_message msg;
+        CHECK_STATUS(cb_law_init(&law, CB_MODEL_WILLETT, gamma_water, 0.3), CB_OK);
+        CHECK_STATUS(cb_law_configure(&law, "rupture", "willett/unequal", &msg), CB_OK);
+        CHECK_STATUS(cb_law_prepare(&law, &msg), CB_OK);
+        double r1 = 1e-3, r2 = 1e-2, rh = 2.0 * r1 * r2 / (r1 + r2);
+        double t_peak = 1.0 / 0.7, peak = t_peak * t_peak * t_peak;
+        const double scaled[] = {1.0, peak * (1.0 - 1e-12), peak * (1.0 + 1e-12), 3.0, 100.0};
+        double previous = 0.0;
+        for (int k = 0; k < 5; ++k) {
+            double v = scaled[k] * rh * rh * rh, d = 0.0, back = 0.0;
+            CHECK_STATUS(cb_rupture_distance(&law, r1, r2, v, &d), CB_OK);
+            CHECK(d > previous);
+            if (k == 2) CHECK_REL(d, previous, 1e-11); /* continuous at the peak */
+            CHECK_STATUS(cb_rupture_volume(&law, r1, r2, d, &back), CB_OK);
+            CHECK_REL(back, v, 1e-12);
+            previous = d;
+            ++n;
+        }
+    }
+    printf("rupture inverse: %d round trips (lian, willett, willett/unequal)\n", n);
 }
 
 /* ------------------------------------------------------------ stiffness bound */

@@ -513,6 +513,43 @@ static void test_against_exact(void)
     }
 }
 
+/* Rupture rules against the exact fold over theta 0-40 deg, size ratio 1-10 and V* 1e-5 to
+ * 0.1 (the README's grid, a corner of each): Willett's unequal-sphere form within 8 %
+ * everywhere; Gladkyy eq. 2 (the equal-sphere form) off by more than 30 % at the large
+ * ratio and volume, and equal to the unequal form at ratio 1. */
+static void test_rupture_rules_against_exact(void)
+{
+    const double thetas[] = {0.0, 20.0 * DEG, 40.0 * DEG};
+    const double ratios[] = {1.0, 3.0, 10.0};
+    const double scaled_volumes[] = {1e-5, 1e-3, 1e-1};
+    double worst_unequal = 0.0, worst_equal = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        cb_law equal, unequal;
+        cb_message msg;
+        CHECK_STATUS(cb_law_init(&equal, CB_MODEL_WILLETT, gamma_water, thetas[a]), CB_OK);
+        CHECK_STATUS(cb_law_init(&unequal, CB_MODEL_WILLETT, gamma_water, thetas[a]), CB_OK);
+        CHECK_STATUS(cb_law_configure(&unequal, "rupture", "willett/unequal", &msg), CB_OK);
+        CHECK_STATUS(cb_law_prepare(&equal, &msg), CB_OK);
+        CHECK_STATUS(cb_law_prepare(&unequal, &msg), CB_OK);
+        for (int q = 0; q < 3; ++q) {
+            double r1 = 1e-3, r2 = 1e-3 * ratios[q], rh = harmonic(r1, r2);
+            for (int k = 0; k < 3; ++k) {
+                double v = scaled_volumes[k] * rh * rh * rh, d_equal = 0.0, d_unequal = 0.0;
+                double exact = exact_rupture(r1, r2, thetas[a], v);
+                CHECK_STATUS(cb_rupture_distance(&equal, r1, r2, v, &d_equal), CB_OK);
+                CHECK_STATUS(cb_rupture_distance(&unequal, r1, r2, v, &d_unequal), CB_OK);
+                worst_unequal = fmax(worst_unequal, fabs(d_unequal / exact - 1.0));
+                worst_equal = fmax(worst_equal, fabs(d_equal / exact - 1.0));
+                if (q == 0) CHECK_REL(d_unequal, d_equal, 1e-15);
+            }
+        }
+    }
+    CHECK(worst_unequal < 0.08);
+    CHECK(worst_equal > 0.30);
+    printf("rupture rules against the exact fold: willett/unequal within %.1f %%, willett "
+           "(eq. 2) %.1f %%\n", 100 * worst_unequal, 100 * worst_equal);
+}
+
 int main(int argc, char **argv)
 {
     (void)argc;
@@ -523,5 +560,6 @@ int main(int argc, char **argv)
     test_weigert_no_bridge();
     test_extensions();
     test_against_exact();
+    test_rupture_rules_against_exact();
     return check_report(argv[0]);
 }

@@ -111,7 +111,7 @@ namespace capbridge_liggghts
 
     inline bool check_rupture(const std::string &k, const std::string &v, std::string &why)
     {
-        static const char *const allowed[] = {"default", "lian", "willett", "exact", NULL};
+        static const char *const allowed[] = {"default", "lian", "willett", "willett/unequal", "exact", NULL};
         return check_one_of(k, v, allowed, why);
     }
     inline bool check_overlap(const std::string &k, const std::string &v, std::string &why)

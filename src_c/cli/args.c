@@ -273,7 +273,7 @@ void cli_print_law_help(FILE *out)
             "Law keywords (the same as in the LAMMPS and LIGGGHTS bindings):\n"
             "  gamma N/m        surface tension, > 0 (default %g, water)\n"
             "  theta DEG        contact angle, 0 <= theta < 90 degrees (default 0)\n"
-            "  rupture RULE     lian | willett | default (table also: exact)\n"
+            "  rupture RULE     lian | willett | willett/unequal | default (table also: exact)\n"
             "  overlap RULE     contact | none: the force in overlap (default contact)\n"
             "  validity RULE    extend | strict: outside the law's validity (default extend)\n"
             "  c VALUE          Richefeu's constant, richefeu only (default 0.9)\n",

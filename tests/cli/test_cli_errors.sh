@@ -53,7 +53,7 @@ expect 2 "theta not a number" "theta '1e-3x' is not a decimal number within doub
 expect 2 "gamma nan" "gamma 'nan' is not a decimal number within double range" -- force richefeu gamma nan $G --gap 0
 expect 2 "gamma empty" "gamma '' is not a decimal number within double range" -- force richefeu gamma "" $G --gap 0
 expect 2 "gamma negative" "gamma = -0.07" "> 0" -- curve richefeu gamma -0.07 $G
-expect 2 "unknown rupture rule" "rupture 'foo'" "allowed lian, willett, default" -- force richefeu rupture foo $G --gap 0
+expect 2 "unknown rupture rule" "rupture 'foo'" "allowed lian, willett, willett/unequal, default" -- force richefeu rupture foo $G --gap 0
 expect 2 "unknown overlap rule" "overlap 'partial'" "allowed contact, none" -- force richefeu overlap partial $G --gap 0
 expect 2 "unknown validity rule" "validity 'loose'" "allowed extend, strict" -- force richefeu validity loose $G --gap 0
 expect 2 "c for another law" "keyword 'c'" "richefeu only" -- force willett c 0.9 $G --gap 0

@@ -63,7 +63,7 @@ CASES = [
     ("unknown liquid protocol", ALL, "capillary law willett liquid protocol7", "off",
      ["liquid 'protocol7'", "protocol2"]),
     ("rupture exact for a closed-form law", ALL, "capillary law willett rupture exact", "off",
-     ["rupture 'exact'", "allowed lian, willett, default"]),
+     ["rupture 'exact'", "allowed lian, willett, willett/unequal, default"]),
     ("richefeu_c for another law", ALL, "capillary law willett richefeu_c 0.8", "off",
      ["'c'", "richefeu only"]),
     ("contact angle of 95 degrees",
