@@ -2,7 +2,7 @@
 # The main job: builds everything (scripts/configure.sh), then compresses a wet granular cylinder
 # (Richefeu 2007 section 4.2, default size: 3000 glass beads, w = 2 %, Protocol 1) and the same
 # sample dry, in LAMMPS under mpirun -np 2, and prints the compressive strengths
-# (out/uniaxial/main/: strength.csv, stress.png, strength.png, snapshot.png). About 7 minutes
+# (out/uniaxial/main/: strength.csv, stress.png, strength.png, snapshot.png). Under a minute
 # on 2 quiet cores once the engines are built. The law report: build/src_c/cli/capbridge report.
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
