@@ -77,7 +77,8 @@ FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
                  arg[iarg]);
     fixed_volume = utils::numeric(FLERR, arg[iarg], false, lmp);
     if (!(fixed_volume >= 0.0))
-      error->all(FLERR, "fix capillary/liquid fixed: volume = {}: must be >= 0 (volume units)", arg[iarg]);
+      error->all(FLERR, "fix capillary/liquid fixed: volume = {}: must be >= 0 (volume units)",
+                 arg[iarg]);
     iarg++;
   }
   const bool protocol = mode != PairGranCapillary::LIQUID_FIXED;
@@ -102,7 +103,8 @@ FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR, "fix capillary/liquid: water content {}: must be >= 0 (mass of "
                    "liquid over mass of solid)", arg[iarg + 1]);
       if (!(liquid_density > 0.0))
-        error->all(FLERR, "fix capillary/liquid: liquid density {}: must be > 0 (mass/volume units)",
+        error->all(FLERR, "fix capillary/liquid: liquid density {}: must be > 0 (mass/volume "
+                   "units)",
                    arg[iarg + 2]);
       iarg += 3;
     } else if (strcmp(key, "liquid") == 0) {
@@ -139,7 +141,8 @@ FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
       need(1, key);
       vmax_given = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (!(vmax_given > 0.0))
-        error->all(FLERR, "fix capillary/liquid: vmax {}: must be > 0 (volume units)", arg[iarg + 1]);
+        error->all(FLERR, "fix capillary/liquid: vmax {}: must be > 0 (volume units)",
+                   arg[iarg + 1]);
       iarg += 2;
     } else
       error->all(FLERR, "fix capillary/liquid: unknown keyword '{}': allowed water, liquid, "
@@ -420,7 +423,8 @@ void FixCapillaryLiquid::census()
     warned_reach = 1;
     if (comm->me == 0)
       error->warning(FLERR, "fix capillary/liquid: {} bridge(s) ruptured at the neighbor reach "
-                     "(built for bridge volumes up to {:.6g} volume units) before their rupture distance; "
+                     "(built for bridge volumes up to {:.6g} volume units) before their rupture "
+                     "distance; "
                      "their liquid is kept; raise vmax; this warning is given once",
                      global[4], vmax);
   }

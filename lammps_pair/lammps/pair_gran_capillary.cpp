@@ -337,8 +337,10 @@ void PairGranCapillary::parse_coeff(int ilo, int ihi, int jlo, int jhi, int narg
     kt_one = number(1, "kt", "tangential stiffness, force/distance");
     damping_one = number(2, "damping", "normal damping rate alpha_n, 0..1");
     mu_one = number(3, "mu", "friction coefficient");
-    if (kn_one < 0.0) error->all(FLERR, "{}: kn = {}: must be >= 0 (force/distance)", where, kn_one);
-    if (kt_one < 0.0) error->all(FLERR, "{}: kt = {}: must be >= 0 (force/distance)", where, kt_one);
+    if (kn_one < 0.0)
+      error->all(FLERR, "{}: kn = {}: must be >= 0 (force/distance)", where, kn_one);
+    if (kt_one < 0.0)
+      error->all(FLERR, "{}: kt = {}: must be >= 0 (force/distance)", where, kt_one);
     if (damping_one < 0.0 || damping_one > 1.0)
       error->all(FLERR, "{}: damping = {}: the damping rate alpha_n must lie in [0, 1] "
                  "(Richefeu 2007 eq. 3)", where, damping_one);
