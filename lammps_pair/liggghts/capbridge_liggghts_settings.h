@@ -21,9 +21,11 @@
 #ifndef CAPBRIDGE_LIGGGHTS_SETTINGS_H_
 #define CAPBRIDGE_LIGGGHTS_SETTINGS_H_
 
+#include "input.h"
 #include "settings.h"
 
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <string>
 
@@ -45,12 +47,16 @@ template struct SettingsMapAccess<&Settings::settings>;
 typedef bool (*WordCheck)(const std::string &keyword, const std::string &value,
                           std::string &why);
 
-/* `keyword word`: stores the word into a std::string of the model. */
+/* `keyword word`: stores the word into a std::string of the model.  A keyword is given
+ * once.  Settings passes no argument count, and LIGGGHTS's argument array is not
+ * NULL-terminated (past the command's last argument lie those of earlier commands): the
+ * end of the command is taken from `input`, the command being read, when the arguments
+ * are its own. */
 class WordSetting : public Setting {
   public:
-    WordSetting(const std::string &keyword, WordCheck check)
-        : Setting(keyword, 1), check_(check), current_(), given_(false), target_(NULL),
-          given_target_(NULL)
+    WordSetting(const std::string &keyword, WordCheck check, const LAMMPS_NS::Input *input)
+        : Setting(keyword, 1), check_(check), input_(input), current_(), given_(false),
+          target_(NULL), given_target_(NULL)
     {
     }
     virtual ~WordSetting() {}
@@ -66,8 +72,12 @@ class WordSetting : public Setting {
     int parseArguments(char **args)
     {
         if (name != args[0]) return 0;
-        if (args[1] == NULL) {
+        if (args[1] == NULL || last_of_command(args)) {
             error_message = "cohesion model capillary: keyword '" + name + "' needs a value";
+            return -1;
+        }
+        if (given_) {
+            error_message = "cohesion model capillary: keyword '" + name + "' is given twice";
             return -1;
         }
         std::string value(args[1]);
@@ -85,12 +95,22 @@ class WordSetting : public Setting {
     void print_value(FILE *out) { fprintf(out, "%s", current_.c_str()); }
 
   private:
+    /* args[0] is the last argument of the command being read */
+    bool last_of_command(char **args) const
+    {
+        if (!input_ || !input_->arg || input_->narg <= 0) return false;
+        std::less<char **> before;
+        char **first = input_->arg, **end = input_->arg + input_->narg;
+        if (before(args, first) || !before(args, end)) return false; /* not its arguments */
+        return !before(args + 1, end);
+    }
     void store()
     {
         if (target_) *target_ = current_;
         if (given_target_) *given_target_ = given_;
     }
     WordCheck check_;
+    const LAMMPS_NS::Input *input_;
     std::string current_;
     bool given_;
     std::string *target_;
@@ -98,16 +118,17 @@ class WordSetting : public Setting {
 };
 
 /* Register `keyword` (default value `initial`) in `settings`, bound to `target`;
- * *given (may be NULL) tells whether the keyword appeared. */
+ * *given (may be NULL) tells whether the keyword appeared; `input` is LIGGGHTS's command
+ * reader (the end of the command). */
 inline void register_word(Settings &settings, const std::string &keyword,
                           const std::string &initial, WordCheck check, std::string &target,
-                          bool *given)
+                          bool *given, const LAMMPS_NS::Input *input)
 {
     SettingMap &map = settings_map(settings);
     WordSetting *setting = NULL;
     SettingMap::iterator it = map.find(keyword);
     if (it == map.end()) {
-        setting = new WordSetting(keyword, check); /* owned (deleted) by Settings */
+        setting = new WordSetting(keyword, check, input); /* owned (deleted) by Settings */
         setting->set_default(initial);
         map[keyword] = setting;
     } else {

@@ -55,6 +55,7 @@ COHESION_MODEL(COHESION_CAPILLARY,capillary,9)
 #include "fix_property_atom.h"
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "fix_contact_history.h"
 #include "force.h"
@@ -199,12 +200,12 @@ namespace ContactModels {
     void registerSettings(Settings & settings)
     {
       using namespace capbridge_liggghts;
-      register_word(settings, "law", "", &check_law, law_name_, &law_given_);
-      register_word(settings, "rupture", "default", &check_rupture, rupture_, NULL);
-      register_word(settings, "overlap", "contact", &check_overlap, overlap_, NULL);
-      register_word(settings, "validity", "extend", &check_validity, validity_, NULL);
-      register_word(settings, "richefeu_c", "0.9", &check_number, richefeu_c_, &c_given_);
-      register_word(settings, "liquid", "fixed", &check_liquid, liquid_, NULL);
+      register_word(settings, "law", "", &check_law, law_name_, &law_given_, input);
+      register_word(settings, "rupture", "default", &check_rupture, rupture_, NULL, input);
+      register_word(settings, "overlap", "contact", &check_overlap, overlap_, NULL, input);
+      register_word(settings, "validity", "extend", &check_validity, validity_, NULL, input);
+      register_word(settings, "richefeu_c", "0.9", &check_number, richefeu_c_, &c_given_, input);
+      register_word(settings, "liquid", "fixed", &check_liquid, liquid_, NULL, input);
       settings.registerOnOff("capillary_friction", capillary_friction_, true);
       settings.registerOnOff("tally", tally_, false);
     }
@@ -268,6 +269,7 @@ namespace ContactModels {
       // exists at the start is formed there); not for compute pair/gran/local
       updating_ = sidata.computeflag != 0;
       if (!updating_) return;
+      check_periodic_images();
       const int nall = atom->nlocal + atom->nghost;
       if (protocol2_) {
         fix_free_->do_forward_comm();
@@ -509,6 +511,31 @@ namespace ContactModels {
     }
 
     /* ---------------------------------------------------------------- errors */
+
+    /* The contact history, and with it every bridge, is kept per pair of atom IDs: in a
+     * periodic box narrower than twice the neighbor cutoff two atoms can meet as two
+     * periodic images, each with a copy of their bridge, creating or destroying liquid.
+     * Widths between opposite faces (triclinic: 1 / |row of the inverse box matrix|). */
+    void check_periodic_images()
+    {
+      const double *h_inv = domain->h_inv;
+      const double width[3] = {
+          1.0 / std::sqrt(h_inv[0] * h_inv[0] + h_inv[5] * h_inv[5] + h_inv[4] * h_inv[4]),
+          1.0 / std::sqrt(h_inv[1] * h_inv[1] + h_inv[3] * h_inv[3]), 1.0 / h_inv[2]};
+      const int periodic[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
+      const double cutoff = neighbor->cutneighmax;
+      for (int d = 0; d < 3; ++d) {
+        if (!periodic[d] || width[d] >= 2.0 * cutoff) continue;
+        char text[480];
+        snprintf(text, sizeof text,
+                 "cohesion model capillary: the periodic box is %g wide along %c, less than "
+                 "twice the neighbor cutoff %g: two atoms would meet as two periodic images, "
+                 "each holding a copy of their bridge.  Make the box at least %g wide along "
+                 "%c (or lower the neighbor skin)",
+                 width[d], "xyz"[d], cutoff, 2.0 * cutoff, "xyz"[d]);
+        fail_all(text);
+      }
+    }
 
     void fail_all(const std::string &message)
     {

@@ -16,10 +16,10 @@ import liggghts_common as lc  # noqa: E402
 HEADER = """units           si
 atom_style      granular
 atom_modify     map array
-boundary        f f f
+boundary        {boundary}
 newton          {newton}
 communicate     single vel yes
-region          box block -0.01 0.01 -0.01 0.01 {zlo} 0.01 units box
+region          box block {xlo} {xhi} -0.01 0.01 {zlo} 0.01 units box
 create_box      1 box
 neighbor        5e-4 bin
 neigh_modify    delay 0
@@ -58,6 +58,11 @@ CASES = [
     ("unknown law", ALL, "capillary law foo", "off",
      ["law 'foo'", "richefeu", "willett/reduced", "table"]),
     ("no law given", ALL, "capillary", "off", ["law NAME", "richefeu"]),
+    # the last word of the command: what follows in LIGGGHTS's argument array is an earlier
+    # command's, not a value
+    ("a keyword without its value", ALL, "capillary law", "off", ["keyword 'law' needs a value"]),
+    ("a keyword given twice", ALL, "capillary law willett law richefeu", "off",
+     ["keyword 'law' is given twice"]),
     ("unknown rupture rule", ALL, "capillary law willett rupture bar", "off",
      ["rupture 'bar'", "lian"]),
     ("unknown liquid protocol", ALL, "capillary law willett liquid protocol7", "off",
@@ -80,6 +85,8 @@ CASES = [
     ("freeLiquid not sent to ghosts",
      ALL + "\nfix freeLiquid all property/atom freeLiquid scalar yes no no 1e-11",
      "capillary law willett liquid protocol2", "off", ["freeLiquid", "ghost"]),
+    ("periodic box narrower than twice the cutoff", ALL, "capillary law willett", "off",
+     ["periodic box is 0.005 wide along x", "twice the neighbor cutoff"]),
     ("volume outside the validity, validity strict",
      "\n".join([GAMMA, THETA, "fix m8 all property/global bridgeVolume peratomtypepair 1 1e-8"]),
      "capillary law willett validity strict", "off",
@@ -111,8 +118,12 @@ def main():
     ok = True
     for k, (name, props, pair, newton, words) in enumerate(CASES):
         deck = os.path.join(workdir, "in.bad%02d" % k)
+        narrow = name.startswith("periodic box")    # 5 mm along x, periodic
         with open(deck, "w") as f:
-            f.write(HEADER.format(zlo=-0.01, newton=newton, props=props) + DECK.format(pair=pair))
+            f.write(HEADER.format(boundary="p f f" if narrow else "f f f",
+                                  xlo=-0.0025 if narrow else -0.01,
+                                  xhi=0.0025 if narrow else 0.01, zlo=-0.01, newton=newton,
+                                  props=props) + DECK.format(pair=pair))
         code, log = lc.liggghts(env, deck, [], workdir, log="log.bad%02d" % k)
         line = lc.error_line(log)
         good = code != 0 and line is not None and all(w in line for w in words)
@@ -123,7 +134,8 @@ def main():
     # walls are dry: the floor pushes (k_n * overlap) and does not pull
     deck = os.path.join(workdir, "in.wall")
     with open(deck, "w") as f:
-        f.write(HEADER.format(zlo=-0.001, newton="off", props=ALL) + WALL_DECK)
+        f.write(HEADER.format(boundary="f f f", xlo=-0.01, xhi=0.01, zlo=-0.001, newton="off",
+                              props=ALL) + WALL_DECK)
     code, log = lc.liggghts(env, deck, [], workdir, log="log.wall")
     rows = lc.thermo_rows(log)
     warned = "walls are dry" in log
