@@ -57,7 +57,8 @@ static const char usage[] =
     "                          rupture_distance / (2000 v)))\n"
     "  --steps-after-rupture N steps run after the rupture (default 10)\n"
     "  --max-steps N           fail if the bridge has not broken by then (default\n"
-    "                          10 x rupture_distance / (v dt) + 1000 + the steps after)\n"
+    "                          10 x rupture_distance / (v dt) + 1000 + the steps after,\n"
+    "                          which must not exceed 1e9)\n"
     "  --every N               print every N-th step (default 1); step 0, bridge\n"
     "                          formation and rupture steps and the last step always\n"
     "Prints '#' comment lines (the command, masses, rupture distance, dt), then CSV:\n"
@@ -180,7 +181,14 @@ int cmd_pulloff(int argc, char **argv)
                 "(k = %g N/m, the larger of k_n and the capillary stiffness)\n",
                 dt, CB_PI * sqrt(m / stiffest), stiffest);
     double pull_steps = ceil(rupture / (p.velocity * dt));
-    double max_default = fmin(10.0 * pull_steps + 1000.0 + (double)options[AFTER].integer, 1e9);
+    double max_default = 10.0 * pull_steps + 1000.0 + (double)options[AFTER].integer;
+    if (!options[MAX_STEPS].given && !(max_default <= 1e9)) {
+        cb_law_release(&law);
+        return cli_usage_error(name, "dt = %g s: the pull reaches the rupture distance (%g m) "
+                               "after %.3g steps; allowed up to 1e8 without --max-steps: give "
+                               "a larger --dt or --velocity, or --max-steps", dt, rupture,
+                               pull_steps);
+    }
     long max_steps = options[MAX_STEPS].given ? options[MAX_STEPS].integer : (long)max_default;
     long after = options[AFTER].integer, every = options[EVERY].integer;
 

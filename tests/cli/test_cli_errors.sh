@@ -92,6 +92,7 @@ expect 2 "range wider than a double" "is wider than a double holds" -- curve ric
 expect 2 "--damping 1.5" "option --damping: 1.5 must be in [0, 1]" -- pulloff richefeu $G --damping 1.5
 expect 2 "--velocity 0" "option --velocity: 0 must be > 0" -- pulloff richefeu $G --velocity 0
 expect 2 "--dt -1" "option --dt: -1 must be > 0" -- pulloff richefeu $G --dt -1
+expect 2 "--dt far too small" "dt = 1e-300 s: the pull reaches the rupture distance" "--max-steps" -- pulloff richefeu $G --dt 1e-300
 expect 2 "--steps-after-rupture -1" "option --steps-after-rupture: -1 is out of range" -- pulloff richefeu $G --steps-after-rupture -1
 expect 2 "--density x" "option --density: 'x' is not a decimal number within double range" -- pulloff richefeu $G --density x
 expect 2 "flag with a value" "option --rupture takes no value" -- exact $G --rupture=1
