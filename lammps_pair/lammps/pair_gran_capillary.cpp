@@ -727,6 +727,18 @@ double PairGranCapillary::init_one(int i, int j)
     reach = max_rupture(i, j, reach_volume) * (1.0 + REACH_MARGIN);
   }
   double cut = ri + rj + reach;
+  if (reach > ri + rj && !reach_warned) {
+    // a rupture distance beyond a diameter needs a bridge of several sphere volumes
+    // (Lian's rule: V > (R_i + R_j)^3): most likely a volume in other units
+    reach_warned = 1;
+    if (comm->me == 0)
+      error->warning(FLERR, "pair gran/capillary: types {} {}: a bridge of volume {:.6g} "
+                     "ruptures at {:.6g}, beyond the radius sum {:.6g} of the largest spheres "
+                     "(a bridge larger than the spheres: check the volume and its units); the "
+                     "neighbor cutoff is {:.6g}; this warning is given once", i, j,
+                     MAX(design_volume(i, j), MAX(held_volume[i], held_volume[j])),
+                     reach / (1.0 + REACH_MARGIN), ri + rj, cut);
+  }
 
   // mirror the symmetric coefficients
   kn[j][i] = kn[i][j];

@@ -71,6 +71,15 @@ close_rel "time step: 0.1 pi sqrt(m/k) in the warning" "$limit" \
     "$(awk 'BEGIN { pi = atan2(0, -1); m = 4 / 3 * pi * 1e-9 * 2500; printf "%.17g", 0.1 * pi * sqrt(m / 100) }')" 1e-5
 echo "time step: $(grep -m1 'WARNING: pair gran/capillary' "$TMP/dt.log")"
 
+# a bridge larger than the spheres (1 m^3 between millimetre spheres): a warning
+checks=$((checks + 1))
+lmp 1 "$TMP/huge.log" -in "$DECKS/in.errors" -var pstyle gran/capillary \
+    -var pcoeff "100 40 0.3 0.4 law richefeu gamma 0.0728 volume 1" >/dev/null 2>&1 ||
+    fail "huge volume: LAMMPS failed: $(grep -m1 ERROR "$TMP/huge.log")"
+grep -q "WARNING: pair gran/capillary: types 1 1: a bridge of volume 1 ruptures at 1, beyond the radius sum 0.002" "$TMP/huge.log" ||
+    fail "huge volume: no warning: $(grep -m1 WARNING "$TMP/huge.log")"
+echo "huge volume: $(grep -m1 'WARNING: pair gran/capillary: types' "$TMP/huge.log")"
+
 # k_n = 1 N/m: the capillary stiffness bound decides.  Richefeu's law is steepest at contact,
 # so the bound is |dF/dgap| at gap 0, which the CLI's force curve gives independently
 checks=$((checks + 1))
