@@ -176,7 +176,9 @@ namespace ContactModels {
       fix_formations_(NULL),
       fix_bridged_(NULL),
       fix_count_(NULL),
-      updating_(false)
+      updating_(false),
+      setup_bridged_(0.0),
+      setup_total_(-1.0)
     {
       // walls are dry: no history, no properties, no force
       if (!wall_) {
@@ -272,6 +274,7 @@ namespace ContactModels {
       check_periodic_images();
       const int nall = atom->nlocal + atom->nghost;
       if (protocol2_) {
+        setup_bridged_ = 0.0;
         fix_free_->do_forward_comm();
         double *nform = fix_formations_->vector_atom;
         for (int k = 0; k < nall; ++k) nform[k] = 0.0;
@@ -291,6 +294,37 @@ namespace ContactModels {
       updating_ = false;
       if (!protocol2_) return;
       finish_formations();
+      if (update->setupflag) check_liquid_total();
+    }
+
+    /* Protocol 2 conserves the liquid within a run; at the setup of each run the total
+     * (free + bridges) is compared with the last run's, so that liquid that left or came
+     * between runs or with atoms lost in one (delete_atoms, which with compress yes also
+     * scrambles the bridges of the renumbered atoms) is reported, not silently taken. */
+    void check_liquid_total()
+    {
+      const double *free_liquid = fix_free_->vector_atom;
+      double local = setup_bridged_, total = 0.0;
+      for (int i = 0; i < atom->nlocal; ++i) local += free_liquid[i];
+      MPI_Allreduce(&local, &total, 1, MPI_DOUBLE, MPI_SUM, world);
+      const double change = total - setup_total_;
+      if (setup_total_ > 0.0 && std::fabs(change) > 1e-9 * setup_total_ && comm->me == 0) {
+        char text[480];
+        snprintf(text, sizeof text,
+                 "cohesion model capillary: the liquid changed by %.17g (%+.3g of it) since "
+                 "the start of the last run: free liquid set, atoms deleted or lost with their "
+                 "liquid, or atom IDs renumbered (delete_atoms with compress yes), which "
+                 "scrambles the bridges of the renumbered atoms", change, change / setup_total_);
+        error->warning(FLERR, text);
+      }
+      setup_total_ = total;
+    }
+
+    /* a bridge's liquid in this rank's setup count: half for each end it owns */
+    void count_setup_bridge(const bool j_local, const double volume)
+    {
+      if (!protocol2_ || !update->setupflag) return;
+      setup_bridged_ += j_local ? volume : 0.5 * volume;
     }
 
     inline void endSurfacesIntersect(SurfacesIntersectData &, ForceData &, ForceData &) {}
@@ -426,6 +460,7 @@ namespace ContactModels {
       }
       // keeps the pair's history through re-neighboring while the bridge exists
       if (d.contact_flags) *d.contact_flags |= CONTACT_COHESION_MODEL;
+      if (updating_) count_setup_bridge(j_local, bridge.volume);
       if (!have_force)
         check(cb_bridge_force(law, ra, rb, gap, &bridge, &capillary), "force", d, gap,
               bridge.volume);
@@ -464,6 +499,7 @@ namespace ContactModels {
         if (c.contact_flags) *c.contact_flags |= CONTACT_COHESION_MODEL;
         const bool j_local = c.j < nlocal;
         if (tally_) tally(c.i, j_local ? c.j : -1, bridge.volume);
+        count_setup_bridge(j_local, bridge.volume);
         // attraction: i towards j (en points from j to i)
         for (int k3 = 0; k3 < 3; ++k3) {
           f[c.i][k3] -= capillary * c.en[k3];
@@ -881,6 +917,9 @@ namespace ContactModels {
     std::vector<double> released_;
     std::vector<capbridge_liggghts::Candidate> candidates_;
     bool updating_;
+    // Protocol 2: liquid in bridges counted in the setup pass (this rank's share), and
+    // the total liquid at the setup of the last run (< 0: none yet)
+    double setup_bridged_, setup_total_;
   };
 }
 }

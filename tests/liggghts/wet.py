@@ -6,11 +6,14 @@
     every thermo output;
   - bridges formed and some ruptured (free liquid went down and, at least once, up);
 and across rank counts: the number of bridges is the same at every output of the first
-1500 steps (the initial state is the same; trajectories only differ by round-off).
+1500 steps (the initial state is the same; trajectories only differ by round-off).  Between
+`run 0` and the run the deck sets the free liquid of type 2 from 1 to 2 nl: the model's
+between-run check warns once, with the change, N(type 2) x 1 nl.
 
 usage: wet.py LIGGGHTS_ENV [--workdir DIR] [--ranks 1,2]
 """
 import os
+import re
 import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
@@ -29,6 +32,14 @@ def run(env, ranks, workdir, law):
                             workdir, ranks=ranks, log="log.wet.%d" % ranks)
     if code != 0:
         lc.fail("wet run on %d rank(s): %s" % (ranks, lc.error_line(log) or log[-2000:]))
+    changes = re.findall(r"WARNING: cohesion model capillary: the liquid changed by (\S+)", log)
+    type2 = re.search(r"(\d+) settings made for type/fraction", log)
+    expected = int(type2.group(1)) * 1e-12 if type2 else float("nan")
+    if len(changes) != 1 or not abs(float(changes[0]) - expected) <= 1e-9 * expected:
+        lc.fail("wet run on %d rank(s): between-run warnings %s, expected one of %.6e m^3" % (
+            ranks, changes, expected))
+    print("wet run, %d rank(s): the free liquid set between the runs is reported: %s m^3 "
+          "(%d x 1 nl)" % (ranks, changes[0], round(expected / 1e-12)))
     rows = lc.thermo_rows(log)
     # the first block is `run 0`; the second the run itself
     rows = [r for r in rows if len(r) == 5]
