@@ -8,7 +8,9 @@
 #   -np     MPI ranks (default 2)
 #   -size   the deck's size (default: default); split_bottom also has large
 #   -out    output directory, created if needed (default out/SCENE/ENGINE-SIZE)
-#   -var    passed on to the deck (any number)
+#   -var    passed on to the deck (any number); NAME must be one of the deck's own
+#           variables (its `variable NAME index` lines and those of the scene's shared
+#           files), so that a misspelt or the other engine's name is refused, not ignored
 # The deck is inputs/SCENE/in.ENGINE. It runs in the output directory and gets the variables
 # size, inputs (the scene directory), and for LAMMPS plugin (the capbridge plugin).
 # Set CAPBRIDGE_SKIP_CONFIGURE=1 when build/ is known to be current (the tests do).
@@ -21,14 +23,28 @@ shift 2
 case $engine in lammps|liggghts) ;; *) echo "scene.sh: unknown engine '$engine' (allowed: lammps, liggghts)" >&2; exit 2 ;; esac
 deck="$top/inputs/$scene/in.$engine"
 [ -f "$deck" ] || { echo "scene.sh: no deck $deck (scenes: $(ls "$top/inputs" | tr '\n' ' '))" >&2; exit 2; }
-np=2 size=default out="" vars=()
+np=2 size=default out="" vars=() names=()
 while [ $# -gt 0 ]; do
   case $1 in
     -np) np=${2:?-np needs a number}; shift 2 ;;
     -size) size=${2:?-size needs a size: smoke, default, paper}; shift 2 ;;
     -out) out=${2:?-out needs a directory}; shift 2 ;;
-    -var) vars+=(-var "${2:?-var needs NAME VALUE}" "${3:?-var $2 needs a value}"); shift 3 ;;
+    -var) vars+=(-var "${2:?-var needs NAME VALUE}" "${3:?-var $2 needs a value}")
+          names+=("$2"); shift 3 ;;
     *) echo "scene.sh: unknown option '$1'" >&2; usage ;;
+  esac
+done
+# the variables the deck takes: the index variables of the deck, of the scene's shared
+# .in files and of its files for this engine (LAMMPS ignores a -var the deck never reads)
+files=("$deck")
+for f in "$top/inputs/$scene"/*.in "$top/inputs/$scene"/*."$engine"; do [ -f "$f" ] && files+=("$f"); done
+known=$(grep -ho 'variable[[:space:]]\+[A-Za-z_][A-Za-z0-9_]*[[:space:]]\+index' "${files[@]}" |
+  awk '{print $2}' | sort -u | tr '\n' ' ')
+for name in "${names[@]+"${names[@]}"}"; do
+  case " $known size inputs plugin " in
+    *" $name "*) ;;
+    *) echo "scene.sh: inputs/$scene/in.$engine has no variable '$name' (it takes: $known)" >&2
+       exit 2 ;;
   esac
 done
 # every scene has smoke, default and paper; a scene may add sizes of its own (size_NAME.in)
