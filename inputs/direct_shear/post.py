@@ -54,10 +54,21 @@ def read_run(path):
     rows = [line.split() for line in lines if line.strip() and not line.startswith("#")]
     if len(rows) < 3:
         fail(f"{path}: fewer than 3 output lines (did the run finish?)")
-    data = np.array([[float(v) for v in row] for row in rows])
-    if data.shape[1] != len(COLUMNS):
-        fail(f"{path}: {data.shape[1]} columns, expected {len(COLUMNS)}")
-    return params, {name: data[:, i] for i, name in enumerate(COLUMNS)}
+    for k, row in enumerate(rows):
+        if len(row) != len(COLUMNS):
+            fail(f"{path}: output line {k + 1} has {len(row)} values, expected {len(COLUMNS)} "
+                 "(a truncated or damaged file)")
+    try:
+        data = np.array([[float(v) for v in row] for row in rows])
+    except ValueError as e:
+        fail(f"{path}: {e}")
+    d = {name: data[:, i] for i, name in enumerate(COLUMNS)}
+    # a run that stopped early would give the plateau of a part of the shear (nD: the planned
+    # shear, in the parameter line since 2026-12-02)
+    if "nD" in params and d["dx_over_D"][-1] < 0.95 * float(params["nD"]):
+        fail(f"{path}: the shear stopped at {d['dx_over_D'][-1]:.3g} <D> of "
+             f"{params['nD']} (did the run finish?)")
+    return params, d
 
 
 def strength(d):
@@ -250,7 +261,8 @@ def main():
     fits = fit_mohr_coulomb(rows, args.out)
     plots(runs, rows, fits, args.out)
     for r in rows:
-        print(f"{r['engine']:8s} p{r['protocol']:9s} {r['bonds']:4s} sigma {r['sigma_Pa']:5g} Pa "
+        protocol = f"p{r['protocol']}" if str(r["protocol"]).isdigit() else r["protocol"]
+        print(f"{r['engine']:8s} {protocol:10s} {r['bonds']:4s} sigma {r['sigma_Pa']:5g} Pa "
               f"w {r['w_percent']:4g} %: tau {r['tau_plateau_Pa']:7.1f} +- {r['tau_plateau_std_Pa']:5.1f} Pa "
               f"(peak {r['tau_peak_Pa']:6.1f}) sigma_n {r['sigma_n_Pa']:6.1f} Pa z_bond "
               f"{r['z_bond_start']:.2f} -> {r['z_bond_end']:.2f}")

@@ -43,6 +43,7 @@ import math
 import os
 import re
 import sys
+import warnings
 
 import numpy as np
 
@@ -62,8 +63,23 @@ def find_log(run):
     raise PostError(f"{run}: no log.lammps or log.liggghts (is this a split_bottom run directory?)")
 
 
+def load_table(path, rows=None):
+    """The numbers of a text table (a file, or its lines): a truncated or damaged file (a
+    run killed while writing) is a PostError naming it, not a traceback or a short table."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")    # numpy's "empty input" warning: an error here
+        try:
+            return np.loadtxt(path if rows is None else rows, comments="#", ndmin=2)
+        except (ValueError, UserWarning) as e:
+            raise PostError(f"{path} is not a complete table of numbers ({e})")
+
+
 def read_params(log):
-    """The SPLIT_BOTTOM_PARAMS line the deck prints: name value pairs."""
+    """The SPLIT_BOTTOM_PARAMS line the deck prints: name value pairs; and the run must have
+    finished (SPLIT_BOTTOM_DONE), or its averages would be of a part of the window."""
+    with open(log) as f:
+        if not any(line.startswith("SPLIT_BOTTOM_DONE") for line in f):
+            raise PostError(f"{log}: no SPLIT_BOTTOM_DONE line: the run did not finish")
     with open(log) as f:
         for line in f:
             if line.startswith("SPLIT_BOTTOM_PARAMS"):
@@ -105,7 +121,7 @@ def read_torque(run):
     path = os.path.join(run, "torque.txt")
     if not os.path.isfile(path):
         raise PostError(f"{path} missing")
-    data = np.loadtxt(path, comments="#", ndmin=2)
+    data = load_table(path)
     if data.size == 0:
         raise PostError(f"{path} is empty")
     return data  # step, torque
@@ -124,7 +140,10 @@ def read_snapshots(run):
         if start is None:
             raise PostError(f"{path}: not a dump custom file")
         cols = lines[start].split()[2:]
-        data = np.loadtxt(lines[start + 1:], ndmin=2)
+        data = load_table(path, lines[start + 1:])
+        if data.shape[1] != len(cols):
+            raise PostError(f"{path}: {data.shape[1]} values an atom, its header names "
+                            f"{len(cols)}")
         snaps.append({c: data[:, i] for i, c in enumerate(cols)})
     return snaps
 

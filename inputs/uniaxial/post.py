@@ -16,6 +16,7 @@ which keeps single-contact spikes of small samples out of the strength.
 import csv
 import os
 import sys
+import warnings
 
 import numpy as np
 import matplotlib
@@ -51,11 +52,25 @@ def read_summary(run):
     return summary
 
 
+def load_table(path, rows=None):
+    """The numbers of a text table (a file, or its lines), or a one-line failure naming it:
+    a truncated or damaged file (a run killed while writing) is not read as a short curve."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")    # numpy's "empty input" warning: an error here
+        try:
+            return np.loadtxt(path if rows is None else rows, comments="#", ndmin=2)
+        except (ValueError, UserWarning) as e:
+            fail(f"{path} is not a complete table of numbers ({e})")
+
+
 def read_curve(run):
     path = os.path.join(run, "uniaxial.txt")
     if not os.path.isfile(path):
         fail(f"missing {path} (did the compression of {run} run?)")
-    data = np.loadtxt(path, comments="#", ndmin=2)
+    if not os.path.isfile(os.path.join(run, "end.dump")):
+        fail(f"{run} has no end.dump: its compression did not finish, so its curve would "
+             "give a strength of a part of the travel")
+    data = load_table(path)
     if data.shape[0] < 5 or data.shape[1] < 4:
         fail(f"{path} has too few lines or columns ({data.shape})")
     return data
@@ -77,9 +92,14 @@ def label(s):
 def read_dump(path):
     with open(path) as f:
         lines = f.readlines()
-    start = next(i for i, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
+    start = next((i for i, l in enumerate(lines) if l.startswith("ITEM: ATOMS")), None)
+    if start is None:
+        fail(f"{path} has no 'ITEM: ATOMS' section (an empty or truncated dump)")
     cols = lines[start].split()[2:]
-    data = np.loadtxt(lines[start + 1:], ndmin=2)
+    data = load_table(path, lines[start + 1:])
+    if data.shape[1] != len(cols) or data.shape[0] == 0:
+        fail(f"{path}: {data.shape[0]} atoms of {data.shape[1]} values, its header names "
+             f"{len(cols)} columns")
     table = {c: data[:, k] for k, c in enumerate(cols)}
     order = np.argsort(table["id"])
     return {c: v[order] for c, v in table.items()}
