@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The direct shear study of Richefeu 2007 section 3.2 (Figs. 5-7): runs the matrix through
-# scripts/scene.sh, then post.py; copies the CSV and PNG into docs/results/direct_shear/.
+# scripts/scene.sh, then post.py; copies the CSV and PNG into docs/results/direct_shear/ (smoke)
+# or docs/results/direct_shear/SIZE/.
 #
 # Usage: inputs/direct_shear/study.sh [-size smoke|default|paper] [-np N] [-engines "lammps liggghts"]
 #                                     [-sigmas "200 500 800"] [-ws "0 0.1 0.5 1 2"] [-protocols "1 2"]
@@ -11,14 +12,19 @@
 #   dry runs once per engine and sigma; the half-bonds variant (Fig. 7): LAMMPS, Protocol 2,
 #   w = 1 %, the middle sigma, next to its all-bonds run.
 # Outputs: out/direct_shear/study-SIZE/<engine>-p<protocol>-<bonds>-s<sigma>-w<w>/ (one run each),
-#   out/direct_shear/study-SIZE/post/ (post.py), copied to docs/results/direct_shear/ (-nocopy: not).
+#   out/direct_shear/study-SIZE/post/ (post.py), copied as above (-nocopy: not).
 # Environment: CAPBRIDGE_LOCK=FILE runs every engine under `flock FILE` (one heavy run at a time on a
 #   shared machine); CAPBRIDGE_SKIP_CONFIGURE, CAPBRIDGE_PLUGIN are passed on to scripts/scene.sh.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
 size=default np=2 engines="lammps liggghts" sigmas="200 500 800" ws="0 0.1 0.5 1 2" lammps_protocols="1 2" half=1 copy=1
+usage() { sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 while [ $# -gt 0 ]; do
+  case $1 in
+    -size|-np|-engines|-sigmas|-ws|-protocols)
+      [ $# -ge 2 ] || { echo "study.sh: $1 needs a value" >&2; usage; } ;;
+  esac
   case $1 in
     -size) size=$2; shift 2 ;;
     -np) np=$2; shift 2 ;;
@@ -28,9 +34,23 @@ while [ $# -gt 0 ]; do
     -protocols) lammps_protocols=$2; shift 2 ;;
     -nohalf) half=0; shift ;;
     -nocopy) copy=0; shift ;;
-    *) sed -n '2,18p' "$0" >&2; exit 2 ;;
+    -h|--help) usage ;;
+    *) echo "study.sh: unknown option '$1'" >&2; usage ;;
   esac
 done
+# checked here, before any run or directory (scene.sh checks them again, one run at a time)
+case $size in smoke|default|paper) ;; *) echo "study.sh: -size must be smoke, default or paper, not '$size'" >&2; exit 2 ;; esac
+case $np in ''|*[!0-9]*|0) echo "study.sh: -np must be a positive integer, not '$np'" >&2; exit 2 ;; esac
+for engine in $engines; do
+  case $engine in lammps|liggghts) ;; *) echo "study.sh: unknown engine '$engine' (allowed: lammps, liggghts)" >&2; exit 2 ;; esac
+done
+for p in $lammps_protocols; do
+  case $p in 1|2) ;; *) echo "study.sh: -protocols takes 1, 2, not '$p'" >&2; exit 2 ;; esac
+done
+# the smoke-size results live in docs/results/direct_shear/, the others in a directory of
+# their size: a default-size study never overwrites the smoke files
+dest="$top/docs/results/direct_shear"
+[ "$size" = smoke ] || dest="$dest/$size"
 study="$top/out/direct_shear/study-$size"
 mkdir -p "$study"
 # ranks waiting in MPI give the core to the other rank (the machine may be shared)
@@ -77,7 +97,6 @@ done
 mkdir -p "$study/post"
 /usr/bin/python3 "$here/post.py" "$study" --out "$study/post" | tee "$study/post/summary.txt"
 if [ "$copy" = 1 ]; then
-  dest="$top/docs/results/direct_shear"
   mkdir -p "$dest"
   cp "$study"/post/*.csv "$study"/post/*.png "$study/post/summary.txt" "$dest/"
   echo "study: copied to $dest"

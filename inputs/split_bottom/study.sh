@@ -38,6 +38,10 @@ while [ $# -gt 0 ]; do
   esac
 done
 case $dashpot in approach|both) ;; *) echo "study.sh: -dashpot takes approach or both, not '$dashpot'" >&2; exit 2 ;; esac
+case $size in smoke|default|large|paper) ;; *) echo "study.sh: -size must be smoke, default, large or paper, not '$size'" >&2; exit 2 ;; esac
+for engine in $engines; do
+  case $engine in lammps|liggghts) ;; *) echo "study.sh: unknown engine '$engine' (allowed: lammps, liggghts)" >&2; exit 2 ;; esac
+done
 for seed in $seeds; do
   case $seed in ''|*[!0-9]*) echo "study.sh: -seeds takes whole numbers >= 0, not '$seed'" >&2; exit 2 ;; esac
 done
@@ -59,10 +63,15 @@ one() {  # engine law volume seed
   fi
   echo "study: $name ($(date -u +%H:%M:%S))"
   local t0=$SECONDS
+  # the dashpot choice is LAMMPS's (LIGGGHTS's hooke damps both ways)
+  local extra=()
+  [ "$1" = lammps ] && extra=(-var dashpot "$dashpot")
   CAPBRIDGE_SKIP_CONFIGURE=${CAPBRIDGE_SKIP_CONFIGURE:-1} "${lock[@]}" \
     "$top/scripts/scene.sh" "$1" split_bottom -np "$np" -size "$size" -out "$out" \
-    -var law "$2" -var volume "$3" -var seed "$4" -var dashpot "$dashpot" \
-    > "$study/$name.out" 2>&1
+    -var law "$2" -var volume "$3" -var seed "$4" "${extra[@]+"${extra[@]}"}" \
+    > "$study/$name.out" 2>&1 ||
+    { echo "study: $name failed: $(grep -m1 -E 'ERROR|scene.sh:|split_bottom:' "$study/$name.out" ||
+                                     tail -n 1 "$study/$name.out")" >&2; exit 1; }
   echo "study: $name took $((SECONDS - t0)) s"
 }
 for engine in $engines; do
