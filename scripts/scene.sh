@@ -24,13 +24,15 @@ case $engine in lammps|liggghts) ;; *) echo "scene.sh: unknown engine '$engine' 
 deck="$top/inputs/$scene/in.$engine"
 [ -f "$deck" ] || { echo "scene.sh: no deck $deck (scenes: $(ls "$top/inputs" | tr '\n' ' '))" >&2; exit 2; }
 np=2 size=default out="" vars=() names=()
+need() {  # need OPTION COUNT ARGS...: the option has its values
+  [ $(($# - 4)) -ge "$2" ] || { echo "scene.sh: $1 needs $3" >&2; exit 2; }
+}
 while [ $# -gt 0 ]; do
   case $1 in
-    -np) np=${2:?-np needs a number}; shift 2 ;;
-    -size) size=${2:?-size needs a size: smoke, default, paper}; shift 2 ;;
-    -out) out=${2:?-out needs a directory}; shift 2 ;;
-    -var) vars+=(-var "${2:?-var needs NAME VALUE}" "${3:?-var $2 needs a value}")
-          names+=("$2"); shift 3 ;;
+    -np) need -np 1 "a number" "$@"; np=$2; shift 2 ;;
+    -size) need -size 1 "a size: smoke, default, paper" "$@"; size=$2; shift 2 ;;
+    -out) need -out 1 "a directory" "$@"; out=$2; shift 2 ;;
+    -var) need -var 2 "NAME VALUE" "$@"; vars+=(-var "$2" "$3"); names+=("$2"); shift 3 ;;
     *) echo "scene.sh: unknown option '$1'" >&2; usage ;;
   esac
 done
