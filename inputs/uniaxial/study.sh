@@ -10,11 +10,16 @@
 #   skipped when its end.dump exists already (delete the run directory to redo it).
 set -euo pipefail
 top=$(cd "$(dirname "$0")/../.." && pwd)
+usage() { sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; }
+case ${1:-} in
+  -h|--help) usage; exit 0 ;;
+  -*) echo "study.sh: unknown option '$1' (the size and the engines are plain words)" >&2; usage >&2; exit 2 ;;
+esac
 size=${1:-smoke}
 shift || true
 engines=("$@")
 [ ${#engines[@]} -gt 0 ] || engines=(lammps liggghts)
-case $size in smoke|default|paper) ;; *) echo "study.sh: size must be smoke, default or paper" >&2; exit 2 ;; esac
+case $size in smoke|default|paper) ;; *) echo "study.sh: size must be smoke, default or paper, not '$size'" >&2; usage >&2; exit 2 ;; esac
 out=$top/out/uniaxial/study-$size
 mkdir -p "$out"
 runs=()
