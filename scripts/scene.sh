@@ -10,20 +10,21 @@
 #   -out    output directory, created if needed (default out/SCENE/ENGINE-SIZE)
 #   -var    passed on to the deck (any number); NAME must be one of the deck's own
 #           variables (its `variable NAME index` lines and those of the scene's shared
-#           files), so that a misspelt or the other engine's name is refused, not ignored
+#           files), so that a misspelt or the other engine's name is refused, not ignored,
+#           and a variable whose default is a number takes a number
 # The deck is inputs/SCENE/in.ENGINE. It runs in the output directory and gets the variables
 # size, inputs (the scene directory), and for LAMMPS plugin (the capbridge plugin).
 # Set CAPBRIDGE_SKIP_CONFIGURE=1 when build/ is known to be current (the tests do).
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
-usage() { sed -n '4,14p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
+usage() { sed -n '4,17p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 [ $# -ge 2 ] || usage
 engine=$1 scene=$2
 shift 2
 case $engine in lammps|liggghts) ;; *) echo "scene.sh: unknown engine '$engine' (allowed: lammps, liggghts)" >&2; exit 2 ;; esac
 deck="$top/inputs/$scene/in.$engine"
 [ -f "$deck" ] || { echo "scene.sh: no deck $deck (scenes: $(ls "$top/inputs" | tr '\n' ' '))" >&2; exit 2; }
-np=2 size=default out="" vars=() names=()
+np=2 size=default out="" vars=()
 need() {  # need OPTION COUNT ARGS...: the option has its values
   [ $(($# - 4)) -ge "$2" ] || { echo "scene.sh: $1 needs $3" >&2; exit 2; }
 }
@@ -32,7 +33,7 @@ while [ $# -gt 0 ]; do
     -np) need -np 1 "a number" "$@"; np=$2; shift 2 ;;
     -size) need -size 1 "a size: smoke, default, paper" "$@"; size=$2; shift 2 ;;
     -out) need -out 1 "a directory" "$@"; out=$2; shift 2 ;;
-    -var) need -var 2 "NAME VALUE" "$@"; vars+=(-var "$2" "$3"); names+=("$2"); shift 3 ;;
+    -var) need -var 2 "NAME VALUE" "$@"; vars+=(-var "$2" "$3"); shift 3 ;;
     *) echo "scene.sh: unknown option '$1'" >&2; usage ;;
   esac
 done
@@ -42,12 +43,24 @@ files=("$deck")
 for f in "$top/inputs/$scene"/*.in "$top/inputs/$scene"/*."$engine"; do [ -f "$f" ] && files+=("$f"); done
 known=$(grep -ho 'variable[[:space:]]\+[A-Za-z_][A-Za-z0-9_]*[[:space:]]\+index' "${files[@]}" |
   awk '{print $2}' | sort -u | tr '\n' ' ')
-for name in "${names[@]+"${names[@]}"}"; do
+number='^[+-]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][+-]?[0-9]+)?$'
+set -- "${vars[@]+"${vars[@]}"}"
+while [ $# -gt 0 ]; do    # -var NAME VALUE triples
+  name=$2 value=$3
+  shift 3
   case " $known size inputs plugin " in
     *" $name "*) ;;
     *) echo "scene.sh: inputs/$scene/in.$engine has no variable '$name' (it takes: $known)" >&2
        exit 2 ;;
   esac
+  # a variable whose default is a number takes a number (the engines would stop later with
+  # an error about an if or a formula that does not name the variable)
+  default=$(grep -h "variable[[:space:]]\+$name[[:space:]]\+index" "${files[@]}" | head -n 1 |
+    awk '{print $4}')
+  if printf '%s' "$default" | grep -Eq "$number" && ! printf '%s' "$value" | grep -Eq "$number"; then
+    echo "scene.sh: -var $name '$value' is not a number (the deck's default: $default)" >&2
+    exit 2
+  fi
 done
 # every scene has smoke, default and paper; a scene may add sizes of its own (size_NAME.in)
 extra=""
