@@ -55,8 +55,8 @@ while [ $# -gt 0 ]; do    # -var NAME VALUE triples
   esac
   # a variable whose default is a number takes a number (the engines would stop later with
   # an error about an if or a formula that does not name the variable)
-  default=$(grep -h "variable[[:space:]]\+$name[[:space:]]\+index" "${files[@]}" | head -n 1 |
-    awk '{print $4}')
+  default=$( { grep -h "variable[[:space:]]\+$name[[:space:]]\+index" "${files[@]}" || true; } |
+    awk 'NR == 1 {print $4}')
   if printf '%s' "$default" | grep -Eq "$number" && ! printf '%s' "$value" | grep -Eq "$number"; then
     echo "scene.sh: -var $name '$value' is not a number (the deck's default: $default)" >&2
     exit 2
