@@ -178,7 +178,8 @@ namespace ContactModels {
       fix_count_(NULL),
       updating_(false),
       setup_bridged_(0.0),
-      setup_total_(-1.0)
+      setup_total_(-1.0),
+      counting_(false)
     {
       // walls are dry: no history, no properties, no force
       if (!wall_) {
@@ -271,7 +272,8 @@ namespace ContactModels {
       // exists at the start is formed there); not for compute pair/gran/local
       updating_ = sidata.computeflag != 0;
       if (!updating_) return;
-      check_periodic_images();
+      if (neighbor->ago == 0) check_periodic_images();    // the box as the list was built
+      counting_ = protocol2_ && update->setupflag;
       const int nall = atom->nlocal + atom->nghost;
       if (protocol2_) {
         setup_bridged_ = 0.0;
@@ -323,8 +325,7 @@ namespace ContactModels {
     /* a bridge's liquid in this rank's setup count: half for each end it owns */
     void count_setup_bridge(const bool j_local, const double volume)
     {
-      if (!protocol2_ || !update->setupflag) return;
-      setup_bridged_ += j_local ? volume : 0.5 * volume;
+      if (counting_) setup_bridged_ += j_local ? volume : 0.5 * volume;
     }
 
     inline void endSurfacesIntersect(SurfacesIntersectData &, ForceData &, ForceData &) {}
@@ -460,7 +461,7 @@ namespace ContactModels {
       }
       // keeps the pair's history through re-neighboring while the bridge exists
       if (d.contact_flags) *d.contact_flags |= CONTACT_COHESION_MODEL;
-      if (updating_) count_setup_bridge(j_local, bridge.volume);
+      if (updating_) count_setup_bridge(j_local, bridge.volume);    // (setup pass only)
       if (!have_force)
         check(cb_bridge_force(law, ra, rb, gap, &bridge, &capillary), "force", d, gap,
               bridge.volume);
@@ -920,6 +921,7 @@ namespace ContactModels {
     // Protocol 2: liquid in bridges counted in the setup pass (this rank's share), and
     // the total liquid at the setup of the last run (< 0: none yet)
     double setup_bridged_, setup_total_;
+    bool counting_;    // this pass counts the bridges' liquid (Protocol 2, setup)
   };
 }
 }
