@@ -39,12 +39,7 @@ static cb_status check_state(const cb_bridge *b)
 {
     int valid;
     if (b->active == 1.0)
-        valid = b->volume > 0.0 && b->volume <= DBL_MAX && b->rupture > 0.0 &&
-                b->rupture <= DBL_MAX && b->force_contact >= 0.0 &&
-                b->force_contact <= DBL_MAX && b->radius_sum > 0.0 &&
-                b->radius_sum <= DBL_MAX && b->radius_product > 0.0 &&
-                b->radius_product <= DBL_MAX && b->inverse_decay_length >= 0.0 &&
-                b->inverse_decay_length <= DBL_MAX;
+        valid = cb_bridge_active_state(b);
     else
         valid = b->active == 0.0 && b->volume == 0.0 && b->rupture == 0.0 &&
                 b->force_contact == 0.0 && b->radius_sum == 0.0 && b->radius_product == 0.0 &&

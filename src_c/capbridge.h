@@ -278,13 +278,24 @@ cb_status cb_bridge_force(const cb_law *law, double r1, double r2, double gap,
  * be called: no bridge, a bridge to rupture, a gap that is NaN, other radii, another law's
  * stretched bridge, or a stored state that is not an active bridge's (cb_bridge_step
  * reports it).  Uses exp(): the engine links libm. */
+/* 1 when a stored state is a valid active bridge's: volume > 0, active 1, rupture > 0,
+ * contact force >= 0, radii > 0, 1/lambda >= 0, every one finite.  The one definition of
+ * that shape: cb_bridge_step validates with it, cb_bridge_held below accepts only it. */
+static inline int cb_bridge_active_state(const cb_bridge *b)
+{
+    return b->active == 1.0 && b->volume > 0.0 && b->volume <= DBL_MAX && b->rupture > 0.0 &&
+           b->rupture <= DBL_MAX && b->force_contact >= 0.0 && b->force_contact <= DBL_MAX &&
+           b->radius_sum > 0.0 && b->radius_sum <= DBL_MAX && b->radius_product > 0.0 &&
+           b->radius_product <= DBL_MAX && b->inverse_decay_length >= 0.0 &&
+           b->inverse_decay_length <= DBL_MAX;
+}
+
 static inline int cb_bridge_held(const cb_law *law, double r1, double r2, double gap,
                                  const cb_bridge *bridge, double *force)
 {
-    if (!(bridge->active == 1.0 && bridge->radius_sum == r1 + r2 &&
-          bridge->radius_product == r1 * r2 && bridge->volume > 0.0 &&
-          bridge->volume <= DBL_MAX && bridge->force_contact >= 0.0 &&
-          bridge->force_contact <= DBL_MAX))
+    /* the radii match stored ones > 0 (so both are > 0 and finite); the gap is finite */
+    if (!(law->prepared && gap >= -DBL_MAX && cb_bridge_active_state(bridge) &&
+          bridge->radius_sum == r1 + r2 && bridge->radius_product == r1 * r2))
         return 0;
     if (gap <= 0.0) {
         /* Richefeu eq. 10 keeps the contact value in overlap; Gladkyy eq. 4 applies none */
@@ -293,8 +304,7 @@ static inline int cb_bridge_held(const cb_law *law, double r1, double r2, double
     }
     /* the product cb_richefeu_force forms (kappa R_g exp(-gap/lambda)); a strict law checks
      * its validity at every evaluation, so it takes the call */
-    if (gap <= bridge->rupture && bridge->rupture <= DBL_MAX &&
-        bridge->inverse_decay_length > 0.0 && bridge->inverse_decay_length <= DBL_MAX &&
+    if (gap <= bridge->rupture && bridge->inverse_decay_length > 0.0 &&
         law->model == CB_MODEL_RICHEFEU && law->validity != CB_VALIDITY_STRICT) {
         *force = bridge->force_contact * exp(-gap * bridge->inverse_decay_length);
         return 1;

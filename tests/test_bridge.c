@@ -546,6 +546,48 @@ static void derived_constants(void)
     cb_law_release(&law);
 }
 
+/* cb_bridge_held accepts exactly what cb_bridge_step holds: wherever the inline shortcut
+ * returns 1, the call returns CB_OK, CB_BRIDGE_HELD and the same force bit for bit.  The
+ * reproducer of issue 16 item 5 (in contact, rupture distance 0, NaN, 1/lambda = -inf, a
+ * gap of -inf), then every field of a valid bridge replaced by a hostile value. */
+static void held_agrees_with_step(void)
+{
+    cb_law law = make_law(0.0, NULL, NULL);
+    const cb_bridge reproducer = {1e-12, 1.0, 0.0, 1e-4, 2e-3, 1e-6, 0.0};
+    double quick = -1.0;
+    CHECK(!cb_bridge_held(&law, 1e-3, 1e-3, -1e-6, &reproducer, &quick));
+    const double r1 = 0.5e-3, r2 = 0.65e-3;
+    const cb_bridge valid = active_bridge(&law, r1, r2, 7.3e-12);
+    const double hostile[] = {0.0, -0.0, NAN, -HUGE_VAL, HUGE_VAL, -1.0, 1e-300, DBL_MAX};
+    const double gaps[] = {-HUGE_VAL, -1e300, -1e-6, 0.0, 1e-9, 0.5 * valid.rupture,
+                           valid.rupture, HUGE_VAL, NAN};
+    int held = 0, mismatched = 0;
+    for (int field = -1; field < CB_BRIDGE_DOUBLES; ++field)
+        for (size_t h = 0; h < sizeof hostile / sizeof *hostile; ++h)
+            for (size_t g = 0; g < sizeof gaps / sizeof *gaps; ++g) {
+                cb_bridge b = valid;
+                if (field >= 0) { /* plain data: the bridge as its array of doubles */
+                    double raw[CB_BRIDGE_DOUBLES];
+                    memcpy(raw, &b, sizeof raw);
+                    raw[field] = hostile[h];
+                    memcpy(&b, raw, sizeof raw);
+                }
+                double inline_force = -1.0, force = -2.0, released = -1.0;
+                cb_transition change = CB_BRIDGE_STAYS_DRY;
+                if (!cb_bridge_held(&law, r1, r2, gaps[g], &b, &inline_force)) continue;
+                ++held;
+                cb_bridge copy = b;
+                cb_status s = cb_bridge_step(&law, r1, r2, gaps[g], 0.0, &copy, &change,
+                                             &released, &force);
+                if (s != CB_OK || change != CB_BRIDGE_HELD || !same_bits(force, inline_force))
+                    ++mismatched;
+            }
+    CHECK(mismatched == 0);
+    CHECK(held > 0); /* the valid bridge itself is held at the gaps within its reach */
+    printf("held vs step: %d held states, %d disagreeing\n", held, mismatched);
+    cb_law_release(&law);
+}
+
 /* cb_certainly_apart may skip a pair only where the gap an engine computes, sqrt(rsq) -
  * radsum, is > 0: checked on squares within a few ulp of contact, where rounding decides,
  * and it must skip pairs clearly apart. */
@@ -595,6 +637,7 @@ int main(int argc, char **argv)
     derived_constants();
     plain_data(&lian);
     certainly_apart();
+    held_agrees_with_step();
 
     cb_law_release(&lian);
     cb_law_release(&lian30);
