@@ -391,7 +391,8 @@ typedef struct cb_exact_problem {
 #define CB_EXACT_MAX_STEPS 1000000
 
 /* The bridge at one gap (0 <= gap <= rupture distance), on the branch connected to
- * gap = 0. CB_ERR_NO_BRIDGE beyond rupture. */
+ * gap = 0. CB_ERR_NO_BRIDGE beyond rupture.  CB_ERR_RANGE (for this and the two below)
+ * where V / R_h^3 or the bridge in SI units (force, pressure, volume) leaves double range. */
 cb_status cb_exact_solve(const cb_exact_problem *problem, double gap, cb_exact_bridge *bridge);
 
 /* The rupture distance: the fold (largest gap) of that branch at fixed volume. */

@@ -4,6 +4,7 @@
 #include "capbridge.h"
 #include "laplace_young_internal.h"
 
+#include <float.h>
 #include <math.h>
 
 /* A requested gap this close above the fold (relative) is taken as the fold itself: the
@@ -21,6 +22,11 @@ static cb_status check_problem(const cb_exact_problem *p)
     if (p->contact_angle < 0.0 || p->contact_angle >= 0.5 * CB_PI)
         return CB_ERR_RANGE;
     if (p->steps < 0 || (p->steps > 0 && p->steps < CB_EXACT_MIN_STEPS) || p->steps > CB_EXACT_MAX_STEPS)
+        return CB_ERR_RANGE;
+    /* the problem is solved in units of R_h: V / R_h^3 must be a number */
+    double rh = cb_radius_harmonic(p->r1, p->r2);
+    double scaled_volume = p->volume / (rh * rh * rh);
+    if (!(rh > 0.0 && scaled_volume > 0.0 && scaled_volume <= DBL_MAX))
         return CB_ERR_RANGE;
     return CB_OK;
 }
@@ -46,26 +52,35 @@ static ly_geometry make_geometry(const cb_exact_problem *p, double *unit)
     return g;
 }
 
+static int bridge_finite(const cb_exact_bridge *b)
+{
+    return isfinite(b->force) && isfinite(b->force_contact1) && isfinite(b->force_contact2) &&
+           isfinite(b->pressure) && isfinite(b->neck_radius) && isfinite(b->volume);
+}
+
 /* The reported bridge of branch point z, in SI units: forces scale with gamma R_h,
- * the pressure with gamma / R_h. */
+ * the pressure with gamma / R_h.  A bridge that leaves double range in SI units (gamma
+ * 1e283 over R_h 1e-11: a pressure of 1e294 / 1e-11) is CB_ERR_RANGE, *bridge untouched. */
 static cb_status make_bridge(const ly_geometry *g, const double z[LY_NVAR], double unit,
                              double gamma, double gap, cb_exact_bridge *bridge)
 {
     ly_profile p;
+    cb_exact_bridge out;
     double pressure = z[LY_PRESSURE];
     if (!ly_shoot(g, z, 0, &p))
         return CB_ERR_NO_CONVERGENCE;
-    bridge->gap = gap;
-    bridge->force = gamma * unit * p.neck_force;
-    bridge->force_contact1 =
-        gamma * unit * ly_contact_force(g->r1, z[LY_DELTA1], g->theta, pressure);
-    bridge->force_contact2 =
-        gamma * unit * ly_contact_force(g->r2, z[LY_DELTA2], g->theta, pressure);
-    bridge->filling_angle1 = z[LY_DELTA1];
-    bridge->filling_angle2 = z[LY_DELTA2];
-    bridge->pressure = gamma * pressure / unit;
-    bridge->neck_radius = unit * p.neck_radius;
-    bridge->volume = unit * unit * unit * p.volume;
+    out.gap = gap;
+    out.force = gamma * unit * p.neck_force;
+    out.force_contact1 = gamma * unit * ly_contact_force(g->r1, z[LY_DELTA1], g->theta, pressure);
+    out.force_contact2 = gamma * unit * ly_contact_force(g->r2, z[LY_DELTA2], g->theta, pressure);
+    out.filling_angle1 = z[LY_DELTA1];
+    out.filling_angle2 = z[LY_DELTA2];
+    out.pressure = gamma * pressure / unit;
+    out.neck_radius = unit * p.neck_radius;
+    out.volume = unit * unit * unit * p.volume;
+    if (!bridge_finite(&out))
+        return CB_ERR_RANGE;
+    *bridge = out;
     return CB_OK;
 }
 

@@ -510,6 +510,50 @@ static void test_bad_input(void)
     CHECK(b.force == untouched.force && d == -1.0);
 }
 
+static int bridge_finite(const cb_exact_bridge *b)
+{
+    return isfinite(b->gap) && isfinite(b->force) && isfinite(b->force_contact1) &&
+           isfinite(b->force_contact2) && isfinite(b->filling_angle1) &&
+           isfinite(b->filling_angle2) && isfinite(b->pressure) && isfinite(b->neck_radius) &&
+           isfinite(b->volume);
+}
+
+/* A problem whose bridge does not fit in double range in SI units is CB_ERR_RANGE, never
+ * CB_OK with an infinity (issue 16 item 6: the pressure gamma/R_h overflowed, +inf); and
+ * across extreme magnitudes every CB_OK answer is finite. */
+static void test_outside_double_range(void)
+{
+    cb_exact_problem p;
+    cb_exact_bridge b;
+    double d = -1.0;
+    p.r1 = 3.538242849772181e-07;
+    p.r2 = 8.5204139937340906e-12;
+    p.volume = 7.2530000938231181e-80;
+    p.contact_angle = 1.0072193135540297;
+    p.surface_tension = 3.6011013243704461e+283;
+    p.steps = 0;
+    CHECK_STATUS(cb_exact_rupture(&p, &d, &b), CB_ERR_RANGE);
+    CHECK_STATUS(cb_exact_solve(&p, 0.0, &b), CB_ERR_RANGE);
+    CHECK(d == -1.0);
+
+    const double gammas[] = {1e-300, 1e-30, 0.07, 1e30, 1e300};
+    const double radii[] = {1e-100, 1e-12, 1e-3, 1e6, 1e100};
+    int solved = 0, infinite = 0;
+    for (int g = 0; g < 5; ++g)
+        for (int r = 0; r < 5; ++r) {
+            p = make_problem(radii[r], 0.5 * radii[r], 20.0, gammas[g], 1e-3);
+            cb_status s = cb_exact_rupture(&p, &d, &b);
+            if (s == CB_OK) {
+                ++solved;
+                if (!bridge_finite(&b) || !isfinite(d)) ++infinite;
+            } else {
+                CHECK(s == CB_ERR_RANGE);
+            }
+        }
+    CHECK(infinite == 0);
+    CHECK(solved >= 9); /* the moderate magnitudes are solved */
+}
+
 static double milliseconds_since(clock_t start)
 {
     return 1e3 * (double)(clock() - start) / CLOCKS_PER_SEC;
@@ -552,6 +596,7 @@ int main(int argc, char **argv)
     test_symmetry();
     test_shape();
     test_bad_input();
+    test_outside_double_range();
     print_timings();
     return check_report(argv[0]);
 }
