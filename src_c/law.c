@@ -372,7 +372,8 @@ cb_status cb_pair_force(const cb_law *law, const cb_pair *pair, double rupture, 
         status = model_forces[law->model](law, pair, gap, &f, &df);
     }
     if (status != CB_OK) return status;
-    if (!isfinite(f) || !isfinite(df) || f < 0.0) return CB_ERR_RANGE;
+    /* a stiffness out of double range fails only a call that asks for it */
+    if (!isfinite(f) || f < 0.0 || (stiffness && !isfinite(df))) return CB_ERR_RANGE;
     *force = f;
     if (stiffness) *stiffness = df;
     return CB_OK;

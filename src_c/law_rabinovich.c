@@ -39,7 +39,8 @@ static void rabinovich_corrected(const cb_law *law, const cb_pair *pair, double 
                                  double *immersion_slope)
 {
     double r = pair->r_harmonic;
-    double k = sqrt(CB_PI * r / (2.0 * pair->volume));
+    /* two roots, not the root of a ratio: pi R / (2V) overflows for a subnormal V */
+    double k = sqrt(0.5 * CB_PI * r) / sqrt(pair->volume);
     double s = k * gap;
     double root = sqrt(1.0 + s * s);
     double denominator = 1.0 + s * (s + root);

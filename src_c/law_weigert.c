@@ -122,12 +122,14 @@ cb_status cb_weigert_force(const cb_law *law, const cb_pair *pair, double gap, d
     }
     double k2 = 1.0 / r2;
     double k2_slope = -r2_slope / (r2 * r2);
-    /* A5, eq. 5 */
-    double suction = gamma * (k1 - k2);
-    double suction_slope = gamma * (k1_slope - k2_slope);
-    double f = CB_PI * r * r * sb * sb * suction + 2.0 * CB_PI * gamma * r * sb * st;
-    double df = CB_PI * r * r * (2.0 * sb * cb * beta_slope * suction + sb * sb * suction_slope) +
-                2.0 * CB_PI * gamma * r * (cb * st + sb * ct) * beta_slope;
+    /* A5, eq. 5, per unit surface tension: gamma multiplies last, so that a large gamma
+     * over a small x_c (the suction gamma k1) cannot overflow where the force does not */
+    double curvature = k1 - k2;
+    double curvature_slope = k1_slope - k2_slope;
+    double f = gamma * (CB_PI * r * r * sb * sb * curvature + 2.0 * CB_PI * r * sb * st);
+    double df = gamma * (CB_PI * r * r *
+                             (2.0 * sb * cb * beta_slope * curvature + sb * sb * curvature_slope) +
+                         2.0 * CB_PI * r * (cb * st + sb * ct) * beta_slope);
     if (!(f >= 0.0)) {
         if (!extend) return CB_ERR_NO_BRIDGE;
         f = 0.0;

@@ -230,6 +230,52 @@ static void test_extreme_scales(void)
     printf("extreme scales: %d evaluations, %d refused with CB_ERR_RANGE\n", n, refused);
 }
 
+/* Every law takes what its rupture distance takes (issue 16 item 7: Rabinovich refused a
+ * subnormal volume, 1e-320, that its rupture distance took), and a stiffness that leaves
+ * double range fails only a call that asks for it (gamma 1e200: the force is finite). */
+static void test_consistent_refusals(void)
+{
+    const double volumes[] = {1e-320, 1e-300, 1e-200};
+    const double gammas[] = {0.072, 1e150, 1e200, 1e300};
+    int calls = 0;
+    for (int m = CB_MODEL_RICHEFEU; m <= LAST_MODEL; ++m)
+        for (int g = 0; g < 4; ++g)
+            for (int j = 0; j < 3; ++j) {
+                cb_law law;
+                cb_message msg;
+                CHECK_STATUS(cb_law_init(&law, (cb_model)m, gammas[g], 20.0 * DEG), CB_OK);
+                CHECK_STATUS(cb_law_prepare(&law, &msg), CB_OK);
+                const double r = 1e-6, v = volumes[j];
+                double d = 0.0;
+                if (cb_rupture_distance(&law, r, r, v, &d) == CB_OK) {
+                    const double gaps[] = {0.0, 0.5 * d, d};
+                    for (int k = 0; k < 3; ++k) {
+                        double f = -1.0, df = 0.0;
+                        cb_status s = cb_force(&law, r, r, v, gaps[k], &f, NULL);
+                        ++calls;
+                        PROPERTY(s == CB_OK && isfinite(f) && f >= 0.0,
+                                 "%s gamma %g V %g gap %g d: rupture taken, force status %d F %g",
+                                 cb_model_name((cb_model)m), gammas[g], v, gaps[k] / d, (int)s, f);
+                        s = cb_force(&law, r, r, v, gaps[k], &f, &df);
+                        PROPERTY(s == CB_ERR_RANGE || (s == CB_OK && isfinite(df)),
+                                 "%s gamma %g V %g: stiffness status %d dF %g",
+                                 cb_model_name((cb_model)m), gammas[g], v, (int)s, df);
+                        cb_bridge b = {0};
+                        cb_transition change;
+                        double released = 0.0;
+                        if (k == 0) {
+                            s = cb_bridge_update(&law, r, r, 0.0, v, &b, &change, &released);
+                            PROPERTY(s == CB_OK && change == CB_BRIDGE_FORMED,
+                                     "%s gamma %g V %g: bridge_update status %d",
+                                     cb_model_name((cb_model)m), gammas[g], v, (int)s);
+                        }
+                    }
+                }
+                cb_law_release(&law);
+            }
+    CHECK(calls > 0);
+}
+
 /* --------------------------------------------------------------- errors */
 
 static void test_errors(void)
@@ -569,6 +615,7 @@ int main(int argc, char **argv)
     (void)argc;
     test_dense_sample();
     test_extreme_scales();
+    test_consistent_refusals();
     test_errors();
     test_configure_messages();
     test_same_law();
