@@ -23,12 +23,13 @@
  * Inputs must be finite with volume >= 0 and r1, r2 > 0. */
 static void split(double volume, double r1, double r2, double *share1, double *share2)
 {
-    double sum = r1 + r2;
+    /* large / (large + small) as 1 / (1 + small / large): r1 + r2 may overflow, the ratio
+     * (in (0, 1]) cannot */
     if (r1 >= r2) {
-        *share1 = volume * (r1 / sum);
+        *share1 = volume / (1.0 + r2 / r1);
         *share2 = volume - *share1;
     } else {
-        *share2 = volume * (r2 / sum);
+        *share2 = volume / (1.0 + r1 / r2);
         *share1 = volume - *share2;
     }
 }

@@ -8,6 +8,7 @@
 #include "capbridge.h"
 #include "check.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -128,6 +129,20 @@ static void protocol2_exact(void)
             CHECK_STATUS(cb_protocol2_take(&f1, &f2, &taken), CB_OK);
             CHECK(taken == volumes[i]);
         }
+
+    /* radii whose sum overflows (issue 16 item 10: both shares were 0): still in
+     * proportion, still adding up to the volume */
+    const double huge[][2] = {{DBL_MAX, DBL_MAX}, {DBL_MAX, 0.25 * DBL_MAX}, {0.5 * DBL_MAX, DBL_MAX}};
+    const double expected_first[] = {0.5, 0.8, 1.0 / 3.0};
+    for (int k = 0; k < 3; ++k) {
+        double v = 3e-12, f1 = 0.0, f2 = 0.0;
+        double s1 = cb_protocol_share(v, huge[k][0], huge[k][1]);
+        double s2 = cb_protocol_share(v, huge[k][1], huge[k][0]);
+        CHECK(s1 + s2 == v);
+        CHECK_REL(s1, expected_first[k] * v, 1e-15);
+        CHECK_STATUS(cb_protocol2_release(v, huge[k][0], huge[k][1], &f1, &f2), CB_OK);
+        CHECK(same_bits(f1, s1) && same_bits(f2, s2));
+    }
 }
 
 /* Long random sequences over many particles: bridges break (release, Protocol 2) and
