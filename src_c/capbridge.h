@@ -167,6 +167,18 @@ cb_status cb_law_init(cb_law *law, cb_model model, double surface_tension, doubl
  * On error, msg names the keyword, the value and what is allowed. */
 cb_status cb_law_configure(cb_law *law, const char *keyword, const char *value, cb_message *msg);
 
+/* The law keywords one command line has given, for cb_law_configure_once: zero it at the
+ * start of each command ({0}). */
+typedef struct cb_keywords_given {
+    unsigned mask;
+} cb_keywords_given;
+
+/* cb_law_configure for one keyword of a command line's list, refusing a keyword the list
+ * has given already (CB_ERR_RANGE, msg names it): a repeated keyword is an error in the
+ * CLI and in both engines, never "the last one wins". */
+cb_status cb_law_configure_once(cb_law *law, cb_keywords_given *given, const char *keyword,
+                                const char *value, cb_message *msg);
+
 /* 1 when two laws give the same forces and rupture distances: the same model and
  * parameters, a default rupture rule taken as the rule it stands for (prepared or not). */
 int cb_law_same(const cb_law *a, const cb_law *b);

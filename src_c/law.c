@@ -105,6 +105,23 @@ cb_status cb_law_configure(cb_law *law, const char *keyword, const char *value, 
     return status;
 }
 
+cb_status cb_law_configure_once(cb_law *law, cb_keywords_given *given, const char *keyword,
+                                const char *value, cb_message *msg)
+{
+    static const char *const keywords[] = {"gamma", "theta", "rupture", "overlap", "validity",
+                                           "c"};
+    if (!law || !given || !keyword) return cb_fail(msg, CB_ERR_NULL, "missing keyword");
+    unsigned bit = 0;
+    for (unsigned k = 0; k < sizeof keywords / sizeof *keywords; ++k)
+        if (strcmp(keyword, keywords[k]) == 0) bit = 1u << k;
+    if (given->mask & bit)
+        return cb_fail(msg, CB_ERR_RANGE,
+                       "keyword '%s' given twice: each law keyword may be given once", keyword);
+    cb_status status = cb_law_configure(law, keyword, value, msg);
+    if (status == CB_OK) given->mask |= bit;
+    return status;
+}
+
 static cb_status apply_keyword(cb_law *law, const char *keyword, const char *value,
                                cb_message *msg)
 {

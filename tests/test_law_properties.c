@@ -408,6 +408,33 @@ static void test_configure_messages(void)
 
 /* cb_law_same: by value (how a keyword was spelled does not matter), the default rupture
  * rule taken as the rule it stands for, prepared or not */
+/* cb_law_configure_once: each keyword of one command line once; a refused value does not
+ * count as given, another keyword is independent, a new set starts afresh. */
+static void test_configure_once(void)
+{
+    cb_law law;
+    cb_message msg;
+    CHECK_STATUS(cb_law_init(&law, CB_MODEL_RICHEFEU, gamma_water, 0.0), CB_OK);
+    cb_keywords_given given = {0};
+    CHECK_STATUS(cb_law_configure_once(&law, &given, "gamma", "0.02", &msg), CB_OK);
+    CHECK_STATUS(cb_law_configure_once(&law, &given, "theta", "abc", &msg), CB_ERR_RANGE);
+    CHECK_STATUS(cb_law_configure_once(&law, &given, "theta", "10", &msg), CB_OK);
+    CHECK_STATUS(cb_law_configure_once(&law, &given, "c", "0.8", &msg), CB_OK);
+    memset(&msg, 0, sizeof msg);
+    CHECK_STATUS(cb_law_configure_once(&law, &given, "gamma", "0.03", &msg), CB_ERR_RANGE);
+    const char *words[] = {"'gamma'", "twice", "once"};
+    CHECK(mentions(&msg, words, 3));
+    CHECK(law.surface_tension == 0.02); /* the first value stands, the repeat changes nothing */
+    CHECK_STATUS(cb_law_configure_once(&law, &given, "c", "0.7", &msg), CB_ERR_RANGE);
+    CHECK(law.richefeu_c == 0.8);
+    CHECK_STATUS(cb_law_configure_once(&law, &given, "colour", "red", &msg),
+                 CB_ERR_UNKNOWN_KEYWORD);
+    cb_keywords_given fresh = {0};
+    CHECK_STATUS(cb_law_configure_once(&law, &fresh, "gamma", "0.03", &msg), CB_OK);
+    CHECK(law.surface_tension == 0.03);
+    CHECK_STATUS(cb_law_configure_once(&law, NULL, "gamma", "0.03", &msg), CB_ERR_NULL);
+}
+
 static void test_same_law(void)
 {
     cb_law a, b;
@@ -618,6 +645,7 @@ int main(int argc, char **argv)
     test_consistent_refusals();
     test_errors();
     test_configure_messages();
+    test_configure_once();
     test_same_law();
     test_strict_validity();
     test_rupture_inverse();
