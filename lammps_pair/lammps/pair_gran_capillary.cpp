@@ -59,6 +59,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <set>
+#include <string>
 
 using namespace LAMMPS_NS;
 using MathConst::MY_PI;
@@ -262,7 +264,11 @@ void PairGranCapillary::settings(int narg, char **arg)
   friction_wet = 1;
   dashpot_floor = 0.0;
   int iarg = 0;
+  std::set<std::string> given;  // a repeated keyword is refused, as in pair_coeff
   while (iarg < narg) {
+    if (!given.insert(arg[iarg]).second)
+      error->all(FLERR, "pair_style gran/capillary: keyword '{}' given twice: each keyword may "
+                 "be given once", arg[iarg]);
     if (strcmp(arg[iarg], "dashpot") == 0) {
       if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "pair_style gran/capillary dashpot", error);
       if (strcmp(arg[iarg + 1], "approach") == 0)
@@ -365,12 +371,16 @@ void PairGranCapillary::parse_coeff(int ilo, int ihi, int jlo, int jhi, int narg
   cb_law_init(&one, model, 1.0, 0.0);
   int have_gamma = 0;
   double volume_one = -1.0;
+  cb_keywords_given given = {0};  // a repeated keyword is refused, as in the CLI
   while (iarg < narg) {
     const char *key = arg[iarg];
     if (iarg + 1 >= narg)
       error->all(FLERR, "{}: keyword '{}' needs a value", where, key);
     const char *value = arg[iarg + 1];
     if (strcmp(key, "volume") == 0) {
+      if (volume_one >= 0.0)
+        error->all(FLERR, "{}: keyword 'volume' given twice: each keyword may be given once",
+                   where);
       if (!utils::is_double(value))
         error->all(FLERR, "{}: volume '{}' must be a number (volume units)", where, value);
       volume_one = utils::numeric(FLERR, value, false, lmp);
@@ -380,7 +390,7 @@ void PairGranCapillary::parse_coeff(int ilo, int ihi, int jlo, int jhi, int narg
     } else {
       cb_message msg;
       msg.text[0] = '\0';
-      if (cb_law_configure(&one, key, value, &msg) != CB_OK)
+      if (cb_law_configure_once(&one, &given, key, value, &msg) != CB_OK)
         error->all(FLERR, "{}: {}", where, msg.text);
       if (strcmp(key, "gamma") == 0) have_gamma = 1;
       spec += fmt::format(" {} {}", key, value);
@@ -832,6 +842,16 @@ void PairGranCapillary::fail_cb(int status, const char *what, int itype, int jty
              cb_status_message((cb_status) status));
 }
 
+// two atoms at distance 0 have no contact normal: stop before their NaN force is applied
+// (LAMMPS printed a NaN pressure at step 0, then the error of the next step's gap)
+void PairGranCapillary::coincident_atoms(int i, int j)
+{
+  error->one(FLERR, "pair gran/capillary: atoms {} and {} are at the same position ({}, {}, {}): "
+             "a pair at distance 0 has no contact normal; move or delete one of them (e.g. "
+             "delete_atoms overlap)", atom->tag[i], atom->tag[j], atom->x[i][0], atom->x[i][1],
+             atom->x[i][2]);
+}
+
 /* ---------------------------------------------------------------------- */
 
 void PairGranCapillary::grow_scratch()
@@ -1281,6 +1301,7 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
     if (!BRIDGES || capillary == 0.0) return;
   }
 
+  if (r == 0.0) coincident_atoms(i, j);
   const double rinv = 1.0 / r;
   double contact = 0.0;
   double fs1 = 0.0, fs2 = 0.0, fs3 = 0.0;

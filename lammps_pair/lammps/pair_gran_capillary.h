@@ -177,6 +177,7 @@ class PairGranCapillary : public Pair {
   }
   [[noreturn]] void fail_cb(int status, const char *what, int itype, int jtype, double r1,
                             double r2, double vol, double gap);
+  [[noreturn]] void coincident_atoms(int i, int j);
   std::string history_id(int size) const;
   const std::string dummy_id = "NEIGH_HISTORY_CAPILLARY_DUMMY";
   void create_history();

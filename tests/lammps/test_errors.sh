@@ -24,6 +24,12 @@ expect() {
 
 expect unknown_keyword "unknown keyword 'foo': allowed gamma, theta, rupture, overlap, validity, c" \
     gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728 foo 1"
+expect repeated_law_keyword "keyword 'gamma' given twice: each law keyword may be given once" \
+    gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728 gamma 0.02 volume 1e-12"
+expect repeated_volume "keyword 'volume' given twice: each keyword may be given once" \
+    gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728 volume 1e-12 volume 2e-12"
+expect repeated_style_keyword "pair_style gran/capillary: keyword 'dashpot' given twice" \
+    "gran/capillary dashpot both dashpot approach" "$GOOD"
 expect unknown_law "unknown law 'richefoo': allowed richefeu, willett" \
     gran/capillary "100 40 0.3 0.4 law richefoo gamma 0.0728 volume 1e-12"
 expect unknown_style_keyword "pair_style gran/capillary: unknown keyword 'frictoin'" \
@@ -58,6 +64,17 @@ expect fix_no_liquid "fix capillary/liquid protocol1: give the liquid once" \
     gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728" protocol1 "every 10"
 expect fix_volume_conflict "volume 1e-12 conflicts with fix capillary/liquid protocol2" \
     gran/capillary "$GOOD" protocol2 "water 0.01 1000"
+
+# two atoms at the same position: an error naming them before any force is applied (no NaN
+# pressure in thermo output first)
+checks=$((checks + 1))
+lmp 1 "$TMP/coincident.log" -in "$DECKS/in.errors" -var pstyle gran/capillary \
+    -var pcoeff "$GOOD" -var x2 0 >/dev/null 2>&1 && fail "coincident: LAMMPS succeeded"
+grep -q "ERROR.*pair gran/capillary: atoms 1 and 2 are at the same position (0, 0, 0)" \
+    "$TMP/coincident.log" "$TMP/coincident.log.screen" 2>/dev/null ||
+    fail "coincident: no error naming atoms 1 and 2: $(grep -h -m1 ERROR "$TMP/coincident.log")"
+! grep -qi "nan" "$TMP/coincident.log" || fail "coincident: a NaN was printed before the error"
+echo "coincident: $(grep -h -m1 ERROR "$TMP/coincident.log" "$TMP/coincident.log.screen" 2>/dev/null | head -1)"
 
 # the time-step check: dt = 1e-3 s is far above 10 % of pi sqrt(m/k_n) (about 1.6e-4 s)
 checks=$((checks + 1))
