@@ -45,6 +45,43 @@ int cli_status_error(const char *command, const char *what, cb_status status)
     return cli_runtime_error(command, "%s: %s", what, cb_status_message(status));
 }
 
+/* cli_quote and cli_clip (args.h). */
+static const char *echo(cli_echo *out, const char *text, size_t length, int quoted)
+{
+    size_t shown = length;
+    if (length > CLI_ECHO_LIMIT) {
+        shown = CLI_ECHO_LIMIT;
+        /* back to the start of a UTF-8 character: continuation bytes are 10xxxxxx */
+        while (shown > 0 && ((unsigned char)text[shown] & 0xC0) == 0x80) --shown;
+    }
+    size_t used = 0;
+    if (quoted) out->text[used++] = '\'';
+    for (size_t k = 0; k < shown; ++k) {
+        unsigned char c = (unsigned char)text[k];
+        if (c < 0x20 || c == 0x7F) used += (size_t)snprintf(out->text + used, 5, "\\x%02x", c);
+        else out->text[used++] = (char)c;
+    }
+    if (shown < length) {
+        memcpy(out->text + used, "...", 3);
+        used += 3;
+    }
+    if (quoted) out->text[used++] = '\'';
+    out->text[used] = '\0';
+    if (shown < length)
+        snprintf(out->text + used, sizeof out->text - used, " (%zu bytes)", length);
+    return out->text;
+}
+
+const char *cli_quote(cli_echo *out, const char *text, size_t length)
+{
+    return echo(out, text, length, 1);
+}
+
+const char *cli_clip(cli_echo *out, const char *text, size_t length)
+{
+    return echo(out, text, length, 0);
+}
+
 const char *cli_describe_pair(char *buffer, size_t size, const cb_law *law, double r1,
                               double r2, double volume)
 {
@@ -88,6 +125,8 @@ static int take_value(const cli_request *request, cli_option *option, const char
 {
     const char *cmd = request->command;
     double number = 0.0;
+    cli_echo shown; /* the value as a message shows it */
+    size_t length = strlen(value);
     switch (option->kind) {
     case CLI_TEXT:
         if (!*value) return cli_usage_error(cmd, "option %s needs a non-empty value", option->name);
@@ -96,8 +135,8 @@ static int take_value(const cli_request *request, cli_option *option, const char
     case CLI_INTEGER: {
         long integer = 0;
         if (!parse_integer(value, &integer))
-            return cli_usage_error(cmd, "option %s: '%s' is not a whole number", option->name,
-                                   value);
+            return cli_usage_error(cmd, "option %s: %s is not a whole number", option->name,
+                                   cli_quote(&shown, value, length));
         if (integer < option->minimum || integer > option->maximum)
             return cli_usage_error(cmd, "option %s: %ld is out of range: allowed %ld to %ld",
                                    option->name, integer, option->minimum, option->maximum);
@@ -108,20 +147,21 @@ static int take_value(const cli_request *request, cli_option *option, const char
     case CLI_FLAG: break;
     default:
         if (!cb_parse_number(value, &number))
-            return cli_usage_error(cmd, "option %s: '%s' is not a decimal number within double range", option->name,
-                                   value);
+            return cli_usage_error(cmd, "option %s: %s is not a decimal number within double range",
+                                   option->name, cli_quote(&shown, value, length));
         if (option->kind == CLI_POSITIVE && !(number > 0.0))
-            return cli_usage_error(cmd, "option %s: %s must be > 0 (%s)", option->name, value,
-                                   option->meaning);
+            return cli_usage_error(cmd, "option %s: %s must be > 0 (%s)", option->name,
+                                   cli_clip(&shown, value, length), option->meaning);
         if (option->kind == CLI_NONNEGATIVE && !(number >= 0.0))
-            return cli_usage_error(cmd, "option %s: %s must be >= 0 (%s)", option->name, value,
-                                   option->meaning);
+            return cli_usage_error(cmd, "option %s: %s must be >= 0 (%s)", option->name,
+                                   cli_clip(&shown, value, length), option->meaning);
         if (option->kind == CLI_FRACTION && !(number >= 0.0 && number <= 1.0))
             return cli_usage_error(cmd, "option %s: %s must be in [0, 1] (%s)", option->name,
-                                   value, option->meaning);
+                                   cli_clip(&shown, value, length), option->meaning);
         if (option->kind == CLI_ANGLE && !(number >= 0.0 && number < 90.0))
             return cli_usage_error(cmd, "option %s: %s must satisfy 0 <= angle < 90 degrees (%s)",
-                                   option->name, value, option->meaning);
+                                   option->name, cli_clip(&shown, value, length),
+                                   option->meaning);
         option->number = number;
         break;
     }
@@ -171,6 +211,7 @@ static int parse(cli_request *request, int argc, char **argv)
 {
     const char *cmd = request->command;
     char names[512];
+    cli_echo shown;
     int i = 0;
     request->positional = NULL;
     if (request->wants_law) {
@@ -192,10 +233,11 @@ static int parse(cli_request *request, int argc, char **argv)
             }
             if (request->wants_law)
                 return cli_usage_error(cmd,
-                                       "unexpected argument '%s': law keywords go right after "
+                                       "unexpected argument %s: law keywords go right after "
                                        "the law name, options start with --",
-                                       arg);
-            return cli_usage_error(cmd, "unexpected argument '%s'", arg);
+                                       cli_quote(&shown, arg, strlen(arg)));
+            return cli_usage_error(cmd, "unexpected argument %s",
+                                   cli_quote(&shown, arg, strlen(arg)));
         }
 
         /* --name value, or --name=value */
@@ -210,7 +252,8 @@ static int parse(cli_request *request, int argc, char **argv)
             }
         }
         if (!option)
-            return cli_usage_error(cmd, "unknown option '%.*s': allowed %s", (int)length, arg,
+            return cli_usage_error(cmd, "unknown option %s: allowed %s",
+                                   cli_quote(&shown, arg, length),
                                    option_names(request, names, sizeof names));
         if (option->given) return cli_usage_error(cmd, "option %s is given twice", option->name);
         if (option->kind == CLI_FLAG) {

@@ -80,6 +80,18 @@ int cli_runtime_error(const char *command, const char *format, ...)
     __attribute__((format(printf, 2, 3)))
 #endif
     ;
+/* User text (an argument, a field of a file) as a message shows it, on one short line:
+ * its first CLI_ECHO_LIMIT bytes (not cutting a UTF-8 character) and, when it is longer,
+ * "..." and its length; control bytes (a newline would end the message) as \xHH.
+ * cli_quote: 'TEXT' or 'TEXT...' (N bytes); cli_clip: TEXT or TEXT... (N bytes) (file
+ * names before ":LINE:"). They return echo->text; length is the text's length. */
+#define CLI_ECHO_LIMIT 60
+typedef struct cli_echo {
+    char text[4 * CLI_ECHO_LIMIT + 48];
+} cli_echo;
+const char *cli_quote(cli_echo *echo, const char *text, size_t length);
+const char *cli_clip(cli_echo *echo, const char *text, size_t length);
+
 /* A failed core call: "capbridge COMMAND: WHAT: <cb_status_message>"; exit code 1. */
 int cli_status_error(const char *command, const char *what, cb_status status);
 

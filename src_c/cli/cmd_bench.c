@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "args.h"
 #include "capbridge.h"
 #include "law_cost.h"
 
@@ -16,8 +17,9 @@ int cmd_bench(int argc, char **argv)
                    "theta = 0) and the ratio to the cheapest closed-form law, one run\n");
             return 0;
         }
-        fprintf(stderr, "capbridge bench: unknown argument '%s': bench takes none\n", argv[1]);
-        return 2;
+        cli_echo shown;
+        return cli_usage_error("bench", "unknown argument %s: bench takes none",
+                               cli_quote(&shown, argv[1], strlen(argv[1])));
     }
     cb_law laws[CB_MODEL_COUNT];
     double ns[CB_MODEL_COUNT], cheapest = HUGE_VAL;

@@ -37,6 +37,10 @@
 #include <math.h>
 #include <stdio.h>
 
+/* The most steps of a run: --max-steps and the other step counts, and the default
+ * --max-steps (10 x the pull steps + 1000 + the steps after rupture) when it is not given. */
+#define MAX_STEPS_LIMIT 1000000000L
+#define MAX_STEPS_TEXT "1e9"
 
 static const char usage[] =
     "usage: capbridge pulloff LAW [keyword value]... --r1 M --r2 M --volume M3\n"
@@ -58,7 +62,7 @@ static const char usage[] =
     "  --steps-after-rupture N steps run after the rupture (default 10)\n"
     "  --max-steps N           fail if the bridge has not broken by then (default\n"
     "                          10 x rupture_distance / (v dt) + 1000 + the steps after,\n"
-    "                          which must not exceed 1e9)\n"
+    "                          which must not exceed " MAX_STEPS_TEXT ")\n"
     "  --every N               print every N-th step (default 1); step 0, bridge\n"
     "                          formation and rupture steps and the last step always\n"
     "Prints '#' comment lines (the command, masses, rupture distance, dt), then CSV:\n"
@@ -137,12 +141,12 @@ int cmd_pulloff(int argc, char **argv)
          .number = 1e-4},
         {.name = "--dt", .kind = CLI_POSITIVE, .meaning = "time step [s]"},
         {.name = "--steps-after-rupture", .kind = CLI_INTEGER,
-         .meaning = "steps run after the rupture", .minimum = 0, .maximum = 1000000000L,
+         .meaning = "steps run after the rupture", .minimum = 0, .maximum = MAX_STEPS_LIMIT,
          .integer = 10},
         {.name = "--max-steps", .kind = CLI_INTEGER, .meaning = "largest number of steps",
-         .minimum = 1, .maximum = 1000000000L},
+         .minimum = 1, .maximum = MAX_STEPS_LIMIT},
         {.name = "--every", .kind = CLI_INTEGER, .meaning = "print every N-th step",
-         .minimum = 1, .maximum = 1000000000L, .integer = 1},
+         .minimum = 1, .maximum = MAX_STEPS_LIMIT, .integer = 1},
     };
     cb_law law;
     cli_request request = {name, usage, 1, &law, options, N_OPTIONS, NULL, NULL};
@@ -182,12 +186,14 @@ int cmd_pulloff(int argc, char **argv)
                 dt, CB_PI * sqrt(m / stiffest), stiffest);
     double pull_steps = ceil(rupture / (p.velocity * dt));
     double max_default = 10.0 * pull_steps + 1000.0 + (double)options[AFTER].integer;
-    if (!options[MAX_STEPS].given && !(max_default <= 1e9)) {
+    if (!options[MAX_STEPS].given && !(max_default <= (double)MAX_STEPS_LIMIT)) {
         cb_law_release(&law);
         return cli_usage_error(name, "dt = %g s: the pull reaches the rupture distance (%g m) "
-                               "after %.3g steps; allowed up to 1e8 without --max-steps: give "
-                               "a larger --dt or --velocity, or --max-steps", dt, rupture,
-                               pull_steps);
+                               "after %.10g steps; the default --max-steps, 10 x %.10g + 1000 + "
+                               "%ld = %.10g, exceeds " MAX_STEPS_TEXT " (the most allowed): give "
+                               "a larger --dt or --velocity, or --max-steps",
+                               dt, rupture, pull_steps, pull_steps, options[AFTER].integer,
+                               max_default);
     }
     long max_steps = options[MAX_STEPS].given ? options[MAX_STEPS].integer : (long)max_default;
     long after = options[AFTER].integer, every = options[EVERY].integer;

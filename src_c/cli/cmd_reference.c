@@ -73,9 +73,11 @@ int cmd_reference(int argc, char **argv)
     int code;
     if (!cli_parse(&request, argc, argv, &code)) return code;
     const char *set = request.positional;
+    cli_echo shown;
     if (!set) return cli_usage_error(name, "missing the set: allowed cases, grid");
     if (strcmp(set, "cases") != 0 && strcmp(set, "grid") != 0)
-        return cli_usage_error(name, "unknown set '%s': allowed cases, grid", set);
+        return cli_usage_error(name, "unknown set %s: allowed cases, grid",
+                               cli_quote(&shown, set, strlen(set)));
     const char *only = options[ONLY].given ? options[ONLY].text : NULL;
     int grid = strcmp(set, "grid") == 0;
     size_t count = grid ? cb_grid_case_count() : cb_gladkyy_case_count;
@@ -86,7 +88,8 @@ int cmd_reference(int argc, char **argv)
         found = strcmp(only, c.name) == 0;
     }
     if (only && !found)
-        return cli_usage_error(name, "no configuration named '%s' in %s", only, set);
+        return cli_usage_error(name, "no configuration named %s in %s",
+                               cli_quote(&shown, only, strlen(only)), set);
 
     int failures = 0;
     print_header(set);

@@ -59,7 +59,9 @@ static int unknown(const char *name)
     }
     if (!name)
         return cli_usage_error(NULL, "missing subcommand: allowed %s (capbridge --help)", allowed);
-    return cli_usage_error(NULL, "unknown subcommand '%s': allowed %s", name, allowed);
+    cli_echo shown;
+    return cli_usage_error(NULL, "unknown subcommand %s: allowed %s",
+                           cli_quote(&shown, name, strlen(name)), allowed);
 }
 
 /* Flush stdout; a failed write (a full disk, a closed pipe) is a failure. */
