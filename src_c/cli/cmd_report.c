@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "args.h"
 #include "capbridge.h"
 #include "law_cost.h"
 #include "reference.h"
@@ -80,7 +81,12 @@ static int measure_set(cb_law *law, const cb_reference_curve_data *curves, long 
         if (!set_law(law, c)) return 0;
         int valid = inside_validity(law, c);
         double rupture = 0.0;
-        if (cb_rupture_distance(law, c->r1, c->r2, c->volume, &rupture) != CB_OK) return 0;
+        cb_status rupture_status = cb_rupture_distance(law, c->r1, c->r2, c->volume, &rupture);
+        if (rupture_status != CB_OK) {
+            fprintf(stderr, "capbridge report: %s: the rupture distance of %s: %s\n",
+                    cb_model_name(law->model), c->name, cb_status_message(rupture_status));
+            return 0;
+        }
         double rupture_error = fabs(rupture - curves[i].rupture) / curves[i].rupture;
         add_error(&e->rupture_all, rupture_error, c->name, CB_CURVE_POINTS - 1);
         if (valid) add_error(&e->rupture_valid, rupture_error, c->name, CB_CURVE_POINTS - 1);
@@ -199,12 +205,19 @@ int cmd_report(int argc, char **argv)
         } else if (strcmp(argv[i], "--csv") == 0 && i + 1 < argc) {
             csv_path = argv[++i];
         } else {
-            fprintf(stderr, "capbridge report: unknown option or missing value '%s': allowed "
-                            "--reference DIR, --csv FILE\n", argv[i]);
-            return 2;
+            cli_echo shown;
+            return cli_usage_error("report", "unknown option or missing value %s: allowed "
+                                   "--reference DIR, --csv FILE",
+                                   cli_quote(&shown, argv[i], strlen(argv[i])));
         }
     }
     char path[4096];
+    if (strlen(reference_dir) + sizeof "/cases.csv" > sizeof path) {
+        cli_echo shown;
+        return cli_usage_error("report", "--reference %s is too long: allowed up to %zu bytes",
+                               cli_quote(&shown, reference_dir, strlen(reference_dir)),
+                               sizeof path - sizeof "/cases.csv");
+    }
     cb_reference_curve_data *cases = NULL, *grid = NULL;
     snprintf(path, sizeof path, "%s/cases.csv", reference_dir);
     long case_count = cb_reference_read(path, &cases);
@@ -242,8 +255,9 @@ int cmd_report(int argc, char **argv)
     if (csv_path) {
         FILE *out = fopen(csv_path, "w");
         if (!out) {
-            fprintf(stderr, "capbridge report: cannot write '%s'\n", csv_path);
-            return 1;
+            cli_echo shown;
+            return cli_runtime_error("report", "cannot write %s",
+                                     cli_quote(&shown, csv_path, strlen(csv_path)));
         }
         print_csv(out, reports, CB_MODEL_COUNT, cheapest);
         fclose(out);
