@@ -183,6 +183,7 @@ static int parse_law(cli_request *request, int argc, char **argv, int *next)
     if (status != CB_OK) return cli_status_error(cmd, "law initialisation", status);
 
     int i = 1;
+    cb_keywords_given given = {0};
     while (i < argc && !is_option(argv[i]) && strcmp(argv[i], "--") != 0) {
         const char *keyword = argv[i];
         const char *value = (i + 1 < argc && !is_option(argv[i + 1])) ? argv[i + 1] : NULL;
@@ -197,7 +198,7 @@ static int parse_law(cli_request *request, int argc, char **argv, int *next)
                 return cli_usage_error(cmd, "law %s: %s", argv[0], msg.text);
             return cli_usage_error(cmd, "law %s: keyword '%s' needs a value", argv[0], keyword);
         }
-        status = cb_law_configure(request->law, keyword, value, &msg);
+        status = cb_law_configure_once(request->law, &given, keyword, value, &msg);
         if (status != CB_OK)
             return cli_usage_error(cmd, "law %s: %s", argv[0],
                                    msg.text[0] ? msg.text : cb_status_message(status));
