@@ -8,6 +8,7 @@
 #include "args.h"
 #include "commands.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -52,15 +53,18 @@ static int parse_columns(const char *spec, long column[N_COLUMNS])
 {
     const char *cmd = "replay";
     const char *item = spec;
+    cli_echo shown;
     for (int k = 0; k < N_COLUMNS; ++k) column[k] = 0;
     for (;;) {
         const char *end = strchr(item, ',');
         size_t length = end ? (size_t)(end - item) : strlen(item);
-        if (length == 0) return cli_usage_error(cmd, "--columns '%s': an empty entry", spec);
+        if (length == 0)
+            return cli_usage_error(cmd, "--columns %s: an empty entry",
+                                   cli_quote(&shown, spec, strlen(spec)));
         const char *equals = memchr(item, '=', length);
         if (!equals)
-            return cli_usage_error(cmd, "--columns entry '%.*s' must be NAME=INDEX (names: %s)",
-                                   (int)length, item, COLUMN_NAME_LIST);
+            return cli_usage_error(cmd, "--columns entry %s must be NAME=INDEX (names: %s)",
+                                   cli_quote(&shown, item, length), COLUMN_NAME_LIST);
         size_t name_length = (size_t)(equals - item);
         int which = -1;
         for (int k = 0; k < N_COLUMNS; ++k)
@@ -68,23 +72,20 @@ static int parse_columns(const char *spec, long column[N_COLUMNS])
                 strncmp(column_names[k], item, name_length) == 0)
                 which = k;
         if (which < 0)
-            return cli_usage_error(cmd, "--columns: unknown quantity '%.*s': allowed %s",
-                                   (int)name_length, item, COLUMN_NAME_LIST);
-        char digits[32];
+            return cli_usage_error(cmd, "--columns: unknown quantity %s: allowed %s",
+                                   cli_quote(&shown, item, name_length), COLUMN_NAME_LIST);
+        /* the column: decimal digits only (no blank, no sign), 1 to MAX_COLUMN */
+        const char *digits = equals + 1;
         size_t digit_length = length - name_length - 1;
         long index = 0;
-        char *stop = NULL;
-        if (digit_length > 0 && digit_length < sizeof digits) {
-            memcpy(digits, equals + 1, digit_length);
-            digits[digit_length] = '\0';
-            index = strtol(digits, &stop, 10);
-        }
-        if (!stop || *stop != '\0' || digits[0] == '+' || digits[0] == '-' || index < 1 ||
-            index > MAX_COLUMN)
+        for (size_t k = 0; k < digit_length && index <= MAX_COLUMN; ++k)
+            index = digits[k] >= '0' && digits[k] <= '9' ? 10 * index + (digits[k] - '0')
+                                                         : MAX_COLUMN + 1;
+        if (index < 1 || index > MAX_COLUMN)
             return cli_usage_error(cmd,
-                                   "--columns %.*s: the column must be a whole number from 1 "
-                                   "to %ld",
-                                   (int)length, item, MAX_COLUMN);
+                                   "--columns %s: the column must be a whole number from 1 "
+                                   "to %ld, in digits",
+                                   cli_quote(&shown, item, length), MAX_COLUMN);
         if (column[which])
             return cli_usage_error(cmd, "--columns: '%s' is given twice", column_names[which]);
         column[which] = index;
@@ -94,39 +95,42 @@ static int parse_columns(const char *spec, long column[N_COLUMNS])
     return CLI_EXIT_OK;
 }
 
-/* One line at a time, any length, without the line end. */
+/* One line at a time, any length, without the line end. A NUL byte cannot be told from
+ * the end of the text, so a line holding one is marked (nul_at) for the caller to refuse. */
 typedef struct line_reader {
     FILE *file;
     char *text;
     size_t capacity;
     long number;
+    size_t nul_at; /* 1-based position of the line's first NUL byte, 0 if none */
 } line_reader;
 
 /* 1: a line; 0: end of file; -1: out of memory or a read error. */
 static int read_line(line_reader *reader)
 {
     size_t used = 0;
-    if (!reader->text) {
-        reader->capacity = 256;
-        reader->text = malloc(reader->capacity);
-        if (!reader->text) return -1;
-    }
-    for (;;) {
-        if (!fgets(reader->text + used, (int)(reader->capacity - used), reader->file)) {
-            if (ferror(reader->file)) return -1;
-            if (used == 0) return 0;
-            break;
+    int c;
+    reader->nul_at = 0;
+    while ((c = getc(reader->file)) != EOF && c != '\n') {
+        if (used + 1 >= reader->capacity) {
+            size_t capacity = reader->capacity ? 2 * reader->capacity : 256;
+            char *bigger = realloc(reader->text, capacity);
+            if (!bigger) return -1;
+            reader->text = bigger;
+            reader->capacity = capacity;
         }
-        used += strlen(reader->text + used);
-        if (used > 0 && reader->text[used - 1] == '\n') break;
-        if (used + 1 < reader->capacity) continue; /* a NUL inside the line: go on */
-        char *bigger = realloc(reader->text, 2 * reader->capacity);
-        if (!bigger) return -1;
-        reader->text = bigger;
-        reader->capacity *= 2;
+        if (c == '\0' && !reader->nul_at) reader->nul_at = used + 1;
+        reader->text[used++] = (char)c;
     }
-    while (used > 0 && (reader->text[used - 1] == '\n' || reader->text[used - 1] == '\r'))
-        reader->text[--used] = '\0';
+    if (ferror(reader->file)) return -1;
+    if (c == EOF && used == 0) return 0;
+    if (!reader->text) { /* an empty line first */
+        reader->text = malloc(256);
+        if (!reader->text) return -1;
+        reader->capacity = 256;
+    }
+    while (used > 0 && reader->text[used - 1] == '\r') --used;
+    reader->text[used] = '\0';
     ++reader->number;
     return 1;
 }
@@ -196,8 +200,10 @@ static void row_problem(replay *r, long line, const char *format, ...)
 {
     if (++r->malformed > MAX_REPORTED) return;
     va_list args;
+    cli_echo shown;
     va_start(args, format);
-    fprintf(stderr, "capbridge replay: %s:%ld: ", r->file_name, line);
+    fprintf(stderr, "capbridge replay: %s:%ld: ",
+            cli_clip(&shown, r->file_name, strlen(r->file_name)), line);
     vfprintf(stderr, format, args);
     fputc('\n', stderr);
     va_end(args);
@@ -219,8 +225,9 @@ static void replay_row(replay *r, char *text, long line)
         }
         const char *field = r->field[r->column[k] - 1];
         if (!cb_parse_number(field, &value[k])) {
-            row_problem(r, line, "column %ld (%s) is '%s', not a decimal number within double range", r->column[k],
-                        column_names[k], field);
+            cli_echo shown;
+            row_problem(r, line, "column %ld (%s) is %s, not a decimal number within double range",
+                        r->column[k], column_names[k], cli_quote(&shown, field, strlen(field)));
             return;
         }
     }
@@ -277,10 +284,25 @@ static int numeric_row(replay *r, const char *text)
     return numeric;
 }
 
+/* The count of ITEM: NUMBER OF ENTRIES: decimal digits only (LAMMPS writes a plain
+ * integer), at most LONG_MAX. */
+static int parse_count(const char *text, long *count)
+{
+    long value = 0;
+    const char *digit = text;
+    for (; *digit >= '0' && *digit <= '9'; ++digit) {
+        if (value > (LONG_MAX - (*digit - '0')) / 10) return 0;
+        value = 10 * value + (*digit - '0');
+    }
+    if (digit == text || *digit != '\0') return 0;
+    *count = value;
+    return 1;
+}
+
 /* Reads the whole file; returns 0, or -1 on a read or memory failure. */
 static int replay_file(replay *r, FILE *file)
 {
-    line_reader reader = {file, NULL, 0, 0};
+    line_reader reader = {file, NULL, 0, 0, 0};
     int got;
     int dump = -1;              /* unknown until the first non-blank line */
     int header_seen = 0;        /* plain tables */
@@ -291,6 +313,13 @@ static int replay_file(replay *r, FILE *file)
     while ((got = read_line(&reader)) == 1) {
         char *text = reader.text;
         long line = reader.number;
+        if (reader.nul_at) {
+            row_problem(r, line, "a NUL byte at character %zu: a line must be text",
+                        reader.nul_at);
+            if (dump == 1 && expect_count) expect_count = 0; /* the count line refused */
+            else if (dump == 1 && in_entries) ++entries;    /* a row of the section, refused */
+            continue;
+        }
         if (is_blank_line(text)) continue;
         if (dump < 0) dump = strncmp(text, "ITEM:", 5) == 0;
         if (!dump) {
@@ -324,13 +353,15 @@ static int replay_file(replay *r, FILE *file)
             continue;
         }
         if (expect_count) {
-            double count = 0.0;
             expect_count = 0;
-            if (!cb_parse_number(text, &count) || count < 0.0 || count != floor(count)) {
-                row_problem(r, line, "ITEM: NUMBER OF ENTRIES: '%s' is not a count", text);
+            if (!parse_count(text, &announced)) {
+                cli_echo shown;
+                row_problem(r, line,
+                            "ITEM: NUMBER OF ENTRIES: %s is not a count: allowed a whole "
+                            "number from 0 to %ld, in digits",
+                            cli_quote(&shown, text, strlen(text)), LONG_MAX);
                 continue;
             }
-            announced = (long)count;
             announced_line = line;
             continue;
         }
@@ -408,16 +439,19 @@ int cmd_replay(int argc, char **argv)
     r.law = &law;
     r.file_name = request.positional;
     FILE *file = strcmp(request.positional, "-") == 0 ? stdin : fopen(request.positional, "r");
+    cli_echo quoted, clipped; /* the file name in a message */
+    const char *quoted_name = cli_quote(&quoted, r.file_name, strlen(r.file_name));
+    const char *clipped_name = cli_clip(&clipped, r.file_name, strlen(r.file_name));
     if (!file) {
         cb_law_release(&law);
-        return cli_runtime_error(name, "cannot open '%s'", request.positional);
+        return cli_runtime_error(name, "cannot open %s", quoted_name);
     }
     r.field = malloc((size_t)r.needed * sizeof *r.field);
     int failed = !r.field || replay_file(&r, file) != 0;
     if (file != stdin) fclose(file);
     free(r.field);
     cb_law_release(&law);
-    if (failed) return cli_runtime_error(name, "error reading '%s'", r.file_name);
+    if (failed) return cli_runtime_error(name, "error reading %s", quoted_name);
 
     if (r.max_relative < 0.0) r.max_relative = 0.0;
     printf("rows,bridges,max_relative_difference,row,line,file_force,law_force,"
@@ -431,10 +465,10 @@ int cmd_replay(int argc, char **argv)
     if (r.malformed > 0) {
         if (r.malformed > MAX_REPORTED)
             fprintf(stderr, "capbridge replay: ... and %ld more\n", r.malformed - MAX_REPORTED);
-        return cli_runtime_error(name, "%s: %ld malformed row%s", r.file_name, r.malformed,
+        return cli_runtime_error(name, "%s: %ld malformed row%s", clipped_name, r.malformed,
                                  r.malformed == 1 ? "" : "s");
     }
-    if (r.rows == 0) return cli_runtime_error(name, "%s: no data rows", r.file_name);
+    if (r.rows == 0) return cli_runtime_error(name, "%s: no data rows", clipped_name);
     if (options[TOLERANCE].given && r.max_relative > options[TOLERANCE].number)
         return cli_runtime_error(name,
                                  "largest relative difference %.3g (row %ld, line %ld) exceeds "

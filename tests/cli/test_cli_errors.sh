@@ -21,7 +21,9 @@ $1"
     [ "$code" -eq "$want" ] || { fail "$label: exit $code, expected $want ($(cat "$TMP/err"))"; return; }
     if [ "$want" -eq 2 ]; then
         checks=$((checks + 1))
-        [ "$(wc -l <"$TMP/err")" -eq 1 ] || fail "$label: stderr is not one line: $(cat "$TMP/err")"
+        [ "$(wc -l <"$TMP/err")" -eq 1 ] || fail "$label: stderr is not one line: $(head -c 600 "$TMP/err")"
+        checks=$((checks + 1))
+        [ "$(wc -c <"$TMP/err")" -le 400 ] || fail "$label: $(wc -c <"$TMP/err") bytes on stderr: $(head -c 600 "$TMP/err")"
         checks=$((checks + 1))
         [ ! -s "$TMP/out" ] || fail "$label: printed on stdout: $(head -2 "$TMP/out")"
     fi
@@ -30,11 +32,36 @@ $1"
         grep -qF -- "$needle" "$TMP/err" || echo "stderr lacks '$needle': $(cat "$TMP/err")"
     done >"$TMP/why"
     checks=$((checks + 1))
-    [ ! -s "$TMP/why" ] || fail "$label: $(cat "$TMP/why")"
+    [ ! -s "$TMP/why" ] || fail "$label: $(head -c 600 "$TMP/why")"
 }
 
 G="--r1 1e-3 --r2 1e-3 --volume 1e-11"
 LAWS="richefeu, willett, willett/reduced, rabinovich, rabinovich/uncorrected, weigert, soulie, table"
+
+# user text in a message is cut to its first 60 bytes, with its length, and a control
+# character is shown as \xHH: the message stays one short line (a 100 kB argument was
+# echoed whole)
+LONG=$(awk 'BEGIN { s = "x"; while (length(s) < 100000) s = s s; print substr(s, 1, 100000) }')
+ONES=$(printf '%s' "$LONG" | tr x 1)
+ZEROS=$(printf '%s' "$LONG" | tr x 0)
+X60=$(printf '%s' "$LONG" | cut -c1-60)
+expect 2 "a 100 kB subcommand" "unknown subcommand '$X60...' (100000 bytes): allowed force, curve" -- "$LONG"
+expect 2 "a subcommand with a newline" "unknown subcommand 'for\x0ace': allowed" -- "for
+ce"
+expect 2 "a 100 kB subcommand after help" "unknown subcommand '$X60...' (100000 bytes)" -- help "$LONG"
+expect 2 "a 100 kB option" "unknown option '--$(printf '%s' "$X60" | cut -c1-58)...' (100002 bytes): allowed --r1" -- force richefeu $G --gap 0 "--$LONG"
+expect 2 "a 100 kB option with =" "unknown option '--gapxxxxxxx" "...' (100005 bytes)" -- force richefeu $G "--gap$LONG=0"
+expect 2 "a 100 kB argument" "unexpected argument '$X60...' (100000 bytes): law keywords go right after" -- force richefeu $G --gap 0 "$LONG"
+expect 2 "a 100 kB number" "option --gap: '1$(printf '%s' "$X60" | cut -c1-59)...' (100001 bytes) is not a decimal number" -- force richefeu $G --gap "1$LONG"
+expect 2 "a 100 kB negative radius" "option --r1: -0000000000" "... (100003 bytes) must be > 0" -- force richefeu --r1 "-0${ZEROS}1" --r2 1e-3 --volume 1e-11 --gap 0
+expect 2 "a 100 kB whole number" "option --points: '1111111111" "...' (100000 bytes) is not a whole number" -- curve richefeu $G --points "$ONES"
+expect 2 "a 100 kB text" "no configuration named '$X60...' (100000 bytes) in cases" -- reference cases --only "$LONG"
+expect 2 "a 100 kB set" "unknown set '$X60...' (100000 bytes): allowed cases, grid" -- reference "$LONG"
+expect 2 "a 100 kB argument of bench" "unknown argument '$X60...' (100000 bytes): bench takes none" -- bench "$LONG"
+expect 2 "a 100 kB argument of report" "unknown option or missing value '$X60...' (100000 bytes): allowed --reference DIR, --csv FILE" -- report "$LONG"
+expect 1 "a 100 kB replay file name" "cannot open '$X60...' (100000 bytes)" -- replay richefeu --columns r1=1,r2=2,volume=3,gap=4,force=5 "$LONG"
+# a UTF-8 character is not cut in two: 59 x then a 2-byte character at bytes 60-61
+expect 2 "a long name cut before a UTF-8 character" "unknown subcommand '$(printf '%s' "$X60" | cut -c1-59)...' (100061 bytes)" -- "$(printf '%s' "$X60" | cut -c1-59)é$LONG"
 
 # subcommands
 expect 2 "no subcommand" "missing subcommand" "force, curve, rupture, exact, pulloff, replay" --
@@ -93,6 +120,17 @@ expect 2 "--damping 1.5" "option --damping: 1.5 must be in [0, 1]" -- pulloff ri
 expect 2 "--velocity 0" "option --velocity: 0 must be > 0" -- pulloff richefeu $G --velocity 0
 expect 2 "--dt -1" "option --dt: -1 must be > 0" -- pulloff richefeu $G --dt -1
 expect 2 "--dt far too small" "dt = 1e-300 s: the pull reaches the rupture distance" "--max-steps" -- pulloff richefeu $G --dt 1e-300
+# the refusal names the quantity it checks, the default --max-steps = 10 x pull steps + 1000 +
+# the steps after rupture, and its limit 1e9 (the message said 1e8 of the pull steps): a dt
+# giving N = 99999990 pull steps (ceil of rupture / (v dt) = N - 0.5), the default is then
+# 999999900 + 1000 + 10 = 1000000910 > 1e9
+rupture=$("$CB" rupture richefeu $G | awk -F, 'NR == 2 { print $1 }')
+dt_n=$(awk -v d="$rupture" 'BEGIN { printf "%.17g", d / (1e-4 * (99999990 - 0.5)) }')
+expect 2 "--dt just too small" "after 99999990 steps" "the default --max-steps, 10 x 99999990 + 1000 + 10 = 1000000910, exceeds 1e9 (the most allowed)" -- pulloff richefeu $G --dt "$dt_n"
+expect 2 "--dt just too small, 0 steps after" "10 x 99999990 + 1000 + 0 = 1000000900, exceeds 1e9" -- pulloff richefeu $G --dt "$dt_n" --steps-after-rupture 0
+"$CB" pulloff --help >"$TMP/out"
+checks=$((checks + 1))
+grep -qF "which must not exceed 1e9" "$TMP/out" || fail "pulloff --help does not state the limit 1e9"
 expect 2 "--steps-after-rupture -1" "option --steps-after-rupture: -1 is out of range" -- pulloff richefeu $G --steps-after-rupture -1
 expect 2 "--density x" "option --density: 'x' is not a decimal number within double range" -- pulloff richefeu $G --density x
 expect 2 "flag with a value" "option --rupture takes no value" -- exact $G --rupture=1
@@ -113,8 +151,8 @@ expect 2 "replay without --columns" "missing option --columns" -- replay richefe
 expect 2 "replay without FILE" "missing FILE" -- replay richefeu --columns r1=1,r2=2,volume=3,gap=4,force=5
 expect 2 "replay, two files" "unexpected argument" -- replay richefeu --columns r1=1,r2=2,volume=3,gap=4,force=5 "$TMP/table" "$TMP/table"
 expect 2 "replay, unknown quantity" "unknown quantity 'vol'" "allowed r1, r2, volume, gap, distance, force" -- replay richefeu --columns r1=1,r2=2,vol=3,gap=4,force=5 "$TMP/table"
-expect 2 "replay, column 0" "--columns r1=0" "whole number from 1" -- replay richefeu --columns r1=0,r2=2,volume=3,gap=4,force=5 "$TMP/table"
-expect 2 "replay, column x" "--columns r2=x" -- replay richefeu --columns r1=1,r2=x,volume=3,gap=4,force=5 "$TMP/table"
+expect 2 "replay, column 0" "--columns 'r1=0'" "whole number from 1" -- replay richefeu --columns r1=0,r2=2,volume=3,gap=4,force=5 "$TMP/table"
+expect 2 "replay, column x" "--columns 'r2=x'" -- replay richefeu --columns r1=1,r2=x,volume=3,gap=4,force=5 "$TMP/table"
 expect 2 "replay, no =" "--columns entry 'r1'" "NAME=INDEX" -- replay richefeu --columns r1,r2=2 "$TMP/table"
 expect 2 "replay, empty entry" "an empty entry" -- replay richefeu --columns r1=1,,r2=2 "$TMP/table"
 expect 2 "replay, twice" "'r1' is given twice" -- replay richefeu --columns r1=1,r1=2 "$TMP/table"
@@ -122,6 +160,14 @@ expect 2 "replay, no force" "--columns lacks force=INDEX" -- replay richefeu --c
 expect 2 "replay, gap and distance" "exactly one of gap=INDEX, distance=INDEX" -- replay richefeu --columns r1=1,r2=2,volume=3,gap=4,distance=4,force=5 "$TMP/table"
 expect 2 "replay, no radius" "missing r2" "--r2" -- replay richefeu --columns r1=1,volume=3,gap=4,force=5 "$TMP/table"
 expect 2 "replay, column and constant" "r1 is both a column" "--r1" -- replay richefeu --r1 1e-3 --columns r1=1,r2=2,volume=3,gap=4,force=5 "$TMP/table"
+# a column is a plain whole number: digits only, no blank, no sign ('force= 2' was taken,
+# 'force=+2' refused)
+for bad in " 2" "2 " "+2" "-2" "0" "02x" "0x2" "2.0" "1e1" "100001" "99999999999999999999"; do
+    expect 2 "replay, column '$bad'" "--columns 'force=$bad': the column must be a whole number from 1 to 100000, in digits" -- replay richefeu --columns "r1=1,r2=2,volume=3,gap=4,force=$bad" "$TMP/table"
+done
+expect 2 "replay, a 100 kB --columns entry" "--columns entry 'r1xxxxxxxxxx" "...' (100002 bytes) must be NAME=INDEX" -- replay richefeu --columns "r1$LONG" "$TMP/table"
+expect 2 "replay, a 100 kB column" "--columns 'r1=1111111111" "...' (100004 bytes): the column must be" -- replay richefeu --columns "r1=1$ONES" "$TMP/table"
+expect 2 "replay, a 100 kB quantity" "unknown quantity 'xxxxxxxxxx" "...' (100000 bytes): allowed r1," -- replay richefeu --columns "$LONG=1" "$TMP/table"
 expect 2 "replay, --tolerance -1" "option --tolerance: -1 must be >= 0" -- replay richefeu --tolerance -1 --columns r1=1,r2=2,volume=3,gap=4,force=5 "$TMP/table"
 
 # help: exit 0, usage on stdout

@@ -120,4 +120,72 @@ expect_malformed "a dump section shorter than announced" "$TMP/bad6" \
 expect_malformed "no data rows" "$TMP/empty" "no data rows" --columns "$COLUMNS"
 expect_malformed "a missing file" "$TMP/does-not-exist" "cannot open" --columns "$COLUMNS"
 
+
+# ITEM: NUMBER OF ENTRIES must be a whole number in digits that a long holds: a count of
+# 1e30 or 2^63 - 1 before one row was taken as a whole dump (exit 0; (long)1e30 undefined)
+# expect_count LABEL COUNT NEEDLE...: a dump announcing COUNT with one row after it
+expect_count() {
+    label=$1 count=$2
+    shift 2
+    printf 'ITEM: TIMESTEP\n0\nITEM: NUMBER OF ENTRIES\n%s\nITEM: ENTRIES c1 c2 c3 c4 c5\n%s\n' \
+        "$count" "1e-3 1e-3 1e-11 0 0" >"$TMP/count.dump"
+    "$CB" replay richefeu --columns r1=1,r2=2,volume=3,gap=4,force=5 "$TMP/count.dump" \
+        >"$TMP/out" 2>"$TMP/err"
+    code=$?
+    checks=$((checks + 1))
+    [ "$code" -eq 1 ] || fail "$label: exit $code, expected 1 ($(cat "$TMP/err"))"
+    for needle in "$@"; do
+        checks=$((checks + 1))
+        grep -qF -- "$needle" "$TMP/err" || fail "$label: stderr lacks '$needle': $(cat "$TMP/err")"
+    done
+}
+ALLOWED="allowed a whole number from 0 to 9223372036854775807, in digits"
+expect_count "a count of 1e30" 1e30 "count.dump:4: ITEM: NUMBER OF ENTRIES: '1e30' is not a count" "$ALLOWED"
+expect_count "a count of 2^63" 9223372036854775808 "'9223372036854775808' is not a count" "$ALLOWED"
+expect_count "a count of -1" -1 "'-1' is not a count" "$ALLOWED"
+expect_count "a count of +1" +1 "'+1' is not a count" "$ALLOWED"
+expect_count "a count of 1.0" 1.0 "'1.0' is not a count" "$ALLOWED"
+expect_count "a count of 2^63 - 1" 9223372036854775807 \
+    "count.dump:5: ITEM: NUMBER OF ENTRIES (line 4) announced 9223372036854775807 rows, this ENTRIES section has 1"
+expect_count "a count of 2" 2 "announced 2 rows, this ENTRIES section has 1"
+
+# a NUL byte in a line: that line is refused by its number, the next one is read on its own
+# (it was merged into the line of the NUL)
+{
+    printf 'r1 r2 volume gap force\n'
+    sed -n 2p "$TMP/table.txt" | cut -d' ' -f2-
+    printf '1e-3 1e-3\0001e-11 0 0\n'
+    sed -n 3,4p "$TMP/table.txt" | cut -d' ' -f2-
+} >"$TMP/nul"
+"$CB" replay richefeu --columns r1=1,r2=2,volume=3,gap=4,force=5 "$TMP/nul" >"$TMP/out" 2>"$TMP/err"
+close_rel "a NUL byte: exit status" "$?" 1 0
+close_rel "a NUL byte: the rows read around it" "$(field "$TMP/out" 2 1)" 3 0
+close_rel "a NUL byte: the largest difference (none)" "$(field "$TMP/out" 2 3)" 0 0
+checks=$((checks + 1))
+grep -qF "nul:3: a NUL byte at character 10: a line must be text" "$TMP/err" ||
+    fail "a NUL byte: stderr $(cat "$TMP/err")"
+
+# a 1 MB field is named by its first characters and its length, on one short line
+awk 'BEGIN { s = "x"; while (length(s) < 1048576) s = s s
+             print "r1 r2 volume gap force"; print "1e-3 1e-3 " s " 0 0" }' >"$TMP/wide"
+"$CB" replay richefeu --columns r1=1,r2=2,volume=3,gap=4,force=5 "$TMP/wide" >"$TMP/out" 2>"$TMP/err"
+close_rel "a 1 MB field: exit status" "$?" 1 0
+checks=$((checks + 1))
+grep -qF "wide:2: column 3 (volume) is 'xxxxxxxxxx" "$TMP/err" &&
+    grep -qF "...' (1048576 bytes), not a decimal number" "$TMP/err" ||
+    fail "a 1 MB field: stderr $(head -c 300 "$TMP/err")"
+checks=$((checks + 1))
+[ "$(wc -c <"$TMP/err")" -lt 500 ] || fail "a 1 MB field: $(wc -c <"$TMP/err") bytes on stderr"
+# the same in ITEM: NUMBER OF ENTRIES
+awk 'BEGIN { s = "7"; while (length(s) < 1048576) s = s s
+             print "ITEM: NUMBER OF ENTRIES"; print "x" s; print "ITEM: ENTRIES a b c d e" }' >"$TMP/wide.dump"
+"$CB" replay richefeu --columns r1=1,r2=2,volume=3,gap=4,force=5 "$TMP/wide.dump" >"$TMP/out" 2>"$TMP/err"
+close_rel "a 1 MB count: exit status" "$?" 1 0
+checks=$((checks + 1))
+grep -qF "wide.dump:2: ITEM: NUMBER OF ENTRIES: 'x777777" "$TMP/err" &&
+    grep -qF "...' (1048577 bytes) is not a count" "$TMP/err" ||
+    fail "a 1 MB count: stderr $(head -c 300 "$TMP/err")"
+checks=$((checks + 1))
+[ "$(wc -c <"$TMP/err")" -lt 500 ] || fail "a 1 MB count: $(wc -c <"$TMP/err") bytes on stderr"
+
 finish
