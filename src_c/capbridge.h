@@ -226,6 +226,85 @@ static inline int cb_certainly_apart(double rsq, double radsum)
     return rsq > radsum * radsum * (1.0 + 4.0 * DBL_EPSILON);
 }
 
+/* ----------------------------------------------------------- contact law */
+
+/* The mechanical contact of two spheres, as Richefeu 2007 defines it (eqs. 1-3, 12): the
+ * normal force f_n = f_n^e + f_n^d + f_n^c is elastic (eq. 2), damping (eq. 3) and the
+ * capillary attraction (eq. 10, f_n^c < 0, cb_force above); here "contact force" is
+ * f_n^e + f_n^d, the part a contact carries.  One definition for the engines' pair loops
+ * (LAMMPS compute() and single()) and the CLI's pulloff: inline, it is the hot path. */
+typedef enum cb_dashpot_rule {
+    CB_DASHPOT_APPROACH = 0, /* Richefeu eq. 3: damping only while the spheres approach */
+    CB_DASHPOT_BOTH,         /* a linear dashpot both ways (it may pull while they separate) */
+    CB_DASHPOT_REPULSIVE     /* both ways, the contact force never attractive (Gladkyy 2014
+                              * §2: "preventing undesirable attractive forces") */
+} cb_dashpot_rule;
+
+typedef struct cb_contact_law {
+    double normal_stiffness;     /* k_n [N/m], >= 0 */
+    double tangential_stiffness; /* k_t [N/m], >= 0 */
+    double damping_rate;         /* alpha_n of eq. 3, 0 <= alpha_n <= 1 */
+    double friction;             /* mu, >= 0 */
+    cb_dashpot_rule dashpot;
+    /* derived by cb_contact_law_init: */
+    double damping_factor;       /* 2 alpha_n sqrt(k_n): times sqrt(m_eff), eq. 3 */
+    double closing_floor;        /* the closing rate the dashpot sees is >= this: 0 or -inf */
+    double force_floor;          /* the contact force is >= this: 0 (repulsive) or -inf */
+} cb_contact_law;
+
+/* Check and derive; on error msg names the coefficient and what is allowed. */
+cb_status cb_contact_law_init(cb_contact_law *law, double normal_stiffness,
+                              double tangential_stiffness, double damping_rate,
+                              double friction, cb_dashpot_rule dashpot, cb_message *msg);
+
+/* The contact force f_n^e + f_n^d (repulsive > 0) at this gap (< 0: in contact; else 0),
+ * gap rate d(gap)/dt (< 0: approaching) and sqrt of the effective mass m1 m2/(m1 + m2):
+ *   k_n (-gap) + 2 alpha_n sqrt(m k_n) max(-gap_rate, floor)      eqs. 2-3
+ * (written without a branch on the rate: approach and separation alternate unpredictably). */
+static inline double cb_contact_normal_force(const cb_contact_law *law, double gap,
+                                             double gap_rate, double sqrt_effective_mass)
+{
+    if (!(gap < 0.0)) return 0.0;
+    const double closing = -gap_rate > law->closing_floor ? -gap_rate : law->closing_floor;
+    const double force = law->normal_stiffness * (-gap) +
+                         law->damping_factor * sqrt_effective_mass * closing;
+    return force > law->force_floor ? force : law->force_floor;
+}
+
+/* The Coulomb limit of eq. 12, mu (f_n - f_n^c), with eq. 1's f_n: mu (f_n^e + f_n^d), the
+ * contact force alone.  The capillary attraction raises it only through the larger contact
+ * force it causes (a pair held by its bridge alone slides at mu F_cap); a tensile contact
+ * force (dashpot both) gives none. */
+static inline double cb_contact_friction_limit(const cb_contact_law *law, double contact_force)
+{
+    return law->friction * (contact_force > 0.0 ? contact_force : 0.0);
+}
+
+/* The tangential spring under its Coulomb limit: force = -k_t displacement, held to
+ * |force| <= limit.  Beyond it the force is scaled onto the limit and, when update is 1,
+ * the displacement with it (the spring slides).  Returns 1 when sliding. */
+static inline int cb_contact_tangential_force(const cb_contact_law *law, double limit,
+                                              double displacement[3], double force[3],
+                                              int update)
+{
+    const double k_t = law->tangential_stiffness;
+    force[0] = -k_t * displacement[0];
+    force[1] = -k_t * displacement[1];
+    force[2] = -k_t * displacement[2];
+    const double magnitude = sqrt(force[0] * force[0] + force[1] * force[1] + force[2] * force[2]);
+    if (!(magnitude > limit)) return 0;
+    const double scale = magnitude > 0.0 ? limit / magnitude : 0.0;
+    if (update) {
+        displacement[0] *= scale;
+        displacement[1] *= scale;
+        displacement[2] *= scale;
+    }
+    force[0] *= scale;
+    force[1] *= scale;
+    force[2] *= scale;
+    return 1;
+}
+
 /* -------------------------------------------------------- bridge state */
 
 /* The state of the liquid bridge of one pair, kept by the engine in its pair history and

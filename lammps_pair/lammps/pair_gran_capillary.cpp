@@ -5,17 +5,16 @@
    gap = r - r_i - r_j, unit normal n from j to i):
 
    normal    F_n = f_contact - f_capillary   (repulsion > 0, force on i = F_n n)
-     f_contact   = k_n (-gap) + 2 alpha_n sqrt(m k_n) (-gap_rate)     gap < 0 only
-                   (Richefeu 2007 eq. 2; damping eq. 3 only while approaching,
-                   gap_rate < 0; m = m_i m_j / (m_i + m_j)); f_contact >= 0
+     f_contact   = cb_contact_normal_force: k_n (-gap) + 2 alpha_n sqrt(m k_n) (-gap_rate),
+                   gap < 0 only (Richefeu 2007 eqs. 2, 3; the dashpot rule: approach, both,
+                   repulsive; m = m_i m_j / (m_i + m_j))
      f_capillary = cb_force(law, r_i, r_j, V, gap) while the bridge exists, else 0
    tangential spring k_t on the incremental shear displacement (history, projected
-     onto the tangent plane each step), Coulomb limit
-       |f_t| <= mu (f_contact + f_capillary)   friction wet (default)
-       |f_t| <= mu f_contact                   friction dry
-     We read eq. 12 of Richefeu 2007, mu (f_n - f_n^c), with f_n the contact force and
-     f_n^c = -f_capillary the (attractive, negative) capillary force: the capillary
-     attraction adds to the normal load that friction can mobilise.
+     onto the tangent plane each step), Coulomb limit (cb_contact_friction_limit)
+       |f_t| <= mu max(f_contact, 0)
+     Richefeu 2007 eq. 12, mu (f_n - f_n^c), with the f_n of his eq. 1 (elastic + damping +
+     capillary): the contact force alone.  The contact law is the core's (capbridge.h), here
+     and in single().
    bridge    the cb_bridge of the pair in the pair history (its volume, and constants the
      core derives from it: the force of a bridge in contact is not evaluated again each
      step); its transitions are the core's (cb_bridge_step, which gives the force of the
@@ -148,8 +147,7 @@ PairGranCapillary::PairGranCapillary(LAMMPS *lmp) : Pair(lmp)
   type_stride = 0;
   contact_on = law_of = nullptr;
   rad_min = rad_max = nullptr;
-  friction_wet = 1;
-  dashpot_floor = 0.0;
+  dashpot = CB_DASHPOT_APPROACH;
   dt = update->dt;
   freeze_group_bit = 0;
 
@@ -256,13 +254,12 @@ void PairGranCapillary::allocate()
 }
 
 /* ----------------------------------------------------------------------
-   pair_style gran/capillary [friction wet|dry]
+   pair_style gran/capillary [dashpot approach|both|repulsive]
 ------------------------------------------------------------------------- */
 
 void PairGranCapillary::settings(int narg, char **arg)
 {
-  friction_wet = 1;
-  dashpot_floor = 0.0;
+  dashpot = CB_DASHPOT_APPROACH;
   int iarg = 0;
   std::set<std::string> given;  // a repeated keyword is refused, as in pair_coeff
   while (iarg < narg) {
@@ -272,26 +269,25 @@ void PairGranCapillary::settings(int narg, char **arg)
     if (strcmp(arg[iarg], "dashpot") == 0) {
       if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "pair_style gran/capillary dashpot", error);
       if (strcmp(arg[iarg + 1], "approach") == 0)
-        dashpot_floor = 0.0;
+        dashpot = CB_DASHPOT_APPROACH;
       else if (strcmp(arg[iarg + 1], "both") == 0)
-        dashpot_floor = -HUGE_VAL;
+        dashpot = CB_DASHPOT_BOTH;
+      else if (strcmp(arg[iarg + 1], "repulsive") == 0)
+        dashpot = CB_DASHPOT_REPULSIVE;
       else
-        error->all(FLERR, "pair_style gran/capillary: dashpot '{}': allowed approach, both",
-                   arg[iarg + 1]);
+        error->all(FLERR, "pair_style gran/capillary: dashpot '{}': allowed approach, both, "
+                   "repulsive", arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(arg[iarg], "friction") == 0) {
-      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "pair_style gran/capillary friction", error);
-      if (strcmp(arg[iarg + 1], "wet") == 0)
-        friction_wet = 1;
-      else if (strcmp(arg[iarg + 1], "dry") == 0)
-        friction_wet = 0;
-      else
-        error->all(FLERR, "pair_style gran/capillary: friction '{}': allowed wet, dry",
-                   arg[iarg + 1]);
-      iarg += 2;
+      // removed: 'friction wet' (the default) counted the capillary attraction twice; the
+      // Coulomb limit is Richefeu 2007 eq. 12 as his eq. 1 defines f_n, always
+      error->all(FLERR, "pair_style gran/capillary: keyword 'friction' was removed: the Coulomb "
+                 "limit is always mu (f_n^e + f_n^d), Richefeu 2007 eq. 12 with the f_n of his "
+                 "eq. 1 (the former default 'friction wet' counted the capillary attraction "
+                 "twice; 'friction dry' is what every run now does): delete the keyword");
     } else
-      error->all(FLERR, "pair_style gran/capillary: unknown keyword '{}': allowed friction, "
-                 "dashpot", arg[iarg]);
+      error->all(FLERR, "pair_style gran/capillary: unknown keyword '{}': allowed dashpot",
+                 arg[iarg]);
   }
 }
 
@@ -343,14 +339,12 @@ void PairGranCapillary::parse_coeff(int ilo, int ihi, int jlo, int jhi, int narg
     kt_one = number(1, "kt", "tangential stiffness, force/distance");
     damping_one = number(2, "damping", "normal damping rate alpha_n, 0..1");
     mu_one = number(3, "mu", "friction coefficient");
-    if (kn_one < 0.0)
-      error->all(FLERR, "{}: kn = {}: must be >= 0 (force/distance)", where, kn_one);
-    if (kt_one < 0.0)
-      error->all(FLERR, "{}: kt = {}: must be >= 0 (force/distance)", where, kt_one);
-    if (damping_one < 0.0 || damping_one > 1.0)
-      error->all(FLERR, "{}: damping = {}: the damping rate alpha_n must lie in [0, 1] "
-                 "(Richefeu 2007 eq. 3)", where, damping_one);
-    if (mu_one < 0.0) error->all(FLERR, "{}: mu = {}: must be >= 0", where, mu_one);
+    // the core's rule for the coefficients (the dashpot rule is pair_style's: any one here)
+    cb_contact_law trial;
+    cb_message msg;
+    if (cb_contact_law_init(&trial, kn_one, kt_one, damping_one, mu_one, CB_DASHPOT_APPROACH,
+                            &msg) != CB_OK)
+      error->all(FLERR, "{}: {}", where, msg.text);
     iarg = 4;
   }
 
@@ -763,10 +757,10 @@ double PairGranCapillary::init_one(int i, int j)
   type_stride = atom->ntypes + 1;
   type_pairs.resize((size_t) type_stride * type_stride);
   TypePair tp;
-  tp.kn = kn[i][j];
-  tp.kt = kt[i][j];
-  tp.mu = mu[i][j];
-  tp.damping_coefficient = 2.0 * damping[i][j] * sqrt(kn[i][j]);
+  cb_message msg;
+  if (cb_contact_law_init(&tp.contact, kn[i][j], kt[i][j], damping[i][j], mu[i][j], dashpot,
+                          &msg) != CB_OK)
+    error->all(FLERR, "pair gran/capillary: types {} {}: {}", i, j, msg.text);    // (checked by pair_coeff)
   tp.formation_volume = liquid_mode == LIQUID_FIXED ? design_volume(i, j) : 0.0;
   tp.volume = volume[i][j];
   tp.cutsq = cut * cut;
@@ -1316,12 +1310,7 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
     double meff = mi * mj / (mi + mj);
     if (mask[i] & freeze_group_bit) meff = mj;
     if (mask[j] & freeze_group_bit) meff = mi;
-
-    // Richefeu 2007 eqs. 2, 3: the dashpot acts while the spheres approach (dashpot_floor 0;
-    // 'dashpot both': -inf, a linear dashpot both ways); written without a branch (approach
-    // and separation alternate unpredictably from pair to pair)
-    const double closing = MAX(-gap_rate, dashpot_floor);
-    contact = tp.kn * (-gap) + tp.damping_coefficient * sqrt(meff) * closing;
+    contact = cb_contact_normal_force(&tp.contact, gap, gap_rate, sqrt(meff));    // eqs. 2, 3
 
     // relative tangential velocity at the contact point
     const double rsqinv = 1.0 / rsq;
@@ -1345,24 +1334,12 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
       shear[1] -= normal_part * dely;
       shear[2] -= normal_part * delz;
     }
-    const double k_t = tp.kt;
-    fs1 = -k_t * shear[0];
-    fs2 = -k_t * shear[1];
-    fs3 = -k_t * shear[2];
-    const double fs = sqrt(fs1 * fs1 + fs2 * fs2 + fs3 * fs3);
-    // (a dashpot acting both ways can pull: no friction from a tensile normal force)
-    const double limit = tp.mu * MAX(contact + (friction_wet ? capillary : 0.0), 0.0);
-    if (fs > limit) {
-      const double scale = fs > 0.0 ? limit / fs : 0.0;
-      if (history_update) {
-        shear[0] *= scale;
-        shear[1] *= scale;
-        shear[2] *= scale;
-      }
-      fs1 *= scale;
-      fs2 *= scale;
-      fs3 *= scale;
-    }
+    double fs[3];
+    cb_contact_tangential_force(&tp.contact, cb_contact_friction_limit(&tp.contact, contact),
+                                shear, fs, history_update);    // eq. 12
+    fs1 = fs[0];
+    fs2 = fs[1];
+    fs3 = fs[2];
   }
 
   const double ccel = (contact - capillary) * rinv;
@@ -1616,20 +1593,20 @@ double PairGranCapillary::single(int i, int j, int itype, int jtype, double rsq,
     const double delz = x[i][2] - x[j][2];
     const double vnnr =
         (v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely + (v[i][2] - v[j][2]) * delz;
-    const double gap_rate = vnnr / r;
+    const double gap_rate = vnnr * (1.0 / r);    // rounded as in pair_force
     double mi = atom->rmass[i], mj = atom->rmass[j];
     double meff = mi * mj / (mi + mj);
     if (atom->mask[i] & freeze_group_bit) meff = mj;
     if (atom->mask[j] & freeze_group_bit) meff = mi;
-    contact = kn[itype][jtype] * (-gap) + 2.0 * damping[itype][jtype] *
-        sqrt(meff * kn[itype][jtype]) * MAX(-gap_rate, dashpot_floor);
+    const cb_contact_law &law_contact = type_pair(itype, jtype).contact;
+    contact = cb_contact_normal_force(&law_contact, gap, gap_rate, sqrt(meff));
     if (history) {
-      const double *shear = &history[HIST_SHEAR];
-      tangential = kt[itype][jtype] *
-          sqrt(shear[0] * shear[0] + shear[1] * shear[1] + shear[2] * shear[2]);
-      const double limit =
-          mu[itype][jtype] * MAX(contact + (friction_wet ? capillary : 0.0), 0.0);
-      tangential = MIN(tangential, limit);
+      // the spring's force as the pair loop gives it this step (no update of the history)
+      double shear[3] = {history[HIST_SHEAR], history[HIST_SHEAR + 1], history[HIST_SHEAR + 2]};
+      double fs[3];
+      cb_contact_tangential_force(&law_contact, cb_contact_friction_limit(&law_contact, contact),
+                                  shear, fs, 0);
+      tangential = sqrt(fs[0] * fs[0] + fs[1] * fs[1] + fs[2] * fs[2]);
     }
   }
   (void) negate;
@@ -1900,8 +1877,12 @@ void PairGranCapillary::write_restart_settings(FILE *fp)
   // them without it, and reads them with the count of the fix it restores into, so a file
   // of another layout would be misread (bridges shifted into other pairs' values)
   fwrite(&history_size, sizeof(int), 1, fp);
-  fwrite(&friction_wet, sizeof(int), 1, fp);
-  fwrite(&dashpot_floor, sizeof(double), 1, fp);
+  // then the settings' format (files before the contact law moved into the core have the
+  // friction setting, 0 or 1, here and the dashpot as a double) and the dashpot rule
+  const int settings_format = SETTINGS_FORMAT;
+  const int rule = (int) dashpot;
+  fwrite(&settings_format, sizeof(int), 1, fp);
+  fwrite(&rule, sizeof(int), 1, fp);
 }
 
 void PairGranCapillary::read_restart_settings(FILE *fp)
@@ -1915,12 +1896,34 @@ void PairGranCapillary::read_restart_settings(FILE *fp)
                  "values a pair, or {} with no liquid): its bridges cannot be read; write it "
                  "again with the build that made it, or start from a data file", history_size,
                  (int) SIZE_BRIDGE, (int) SIZE_CONTACT);
-    utils::sfread(FLERR, &friction_wet, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &dashpot_floor, sizeof(double), 1, fp, nullptr, error);
+    int format = 0, rule = 0;
+    utils::sfread(FLERR, &format, sizeof(int), 1, fp, nullptr, error);
+    if (format == 0 || format == 1) {
+      // an earlier file: format is its friction setting (1: 'friction wet'), then the
+      // dashpot's closing-rate floor (0: approach, -inf: both)
+      double floor = 0.0;
+      utils::sfread(FLERR, &floor, sizeof(double), 1, fp, nullptr, error);
+      rule = floor == 0.0 ? CB_DASHPOT_APPROACH : CB_DASHPOT_BOTH;
+      if (format == 1)
+        error->warning(FLERR, "pair gran/capillary: this restart file was written with "
+                       "'friction wet', which counted the capillary attraction twice in the "
+                       "Coulomb limit; it runs on with Richefeu 2007 eq. 12, mu (f_n^e + "
+                       "f_n^d): sliding contacts carry less tangential force than before");
+    } else if (format == SETTINGS_FORMAT) {
+      utils::sfread(FLERR, &rule, sizeof(int), 1, fp, nullptr, error);
+    } else {
+      error->one(FLERR, "pair gran/capillary: this restart file holds settings of format {}, "
+                 "which this build does not know (it writes {})", format, (int) SETTINGS_FORMAT);
+    }
+    if (rule != CB_DASHPOT_APPROACH && rule != CB_DASHPOT_BOTH && rule != CB_DASHPOT_REPULSIVE)
+      error->one(FLERR, "pair gran/capillary: this restart file holds dashpot rule {}: allowed "
+                 "0 (approach), 1 (both), 2 (repulsive)", rule);
+    dashpot = (cb_dashpot_rule) rule;
   }
   MPI_Bcast(&history_size, 1, MPI_INT, 0, world);
-  MPI_Bcast(&friction_wet, 1, MPI_INT, 0, world);
-  MPI_Bcast(&dashpot_floor, 1, MPI_DOUBLE, 0, world);
+  int rule = (int) dashpot;
+  MPI_Bcast(&rule, 1, MPI_INT, 0, world);
+  dashpot = (cb_dashpot_rule) rule;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -38,6 +38,8 @@ class PairGranCapillary : public Pair {
   // A style whose first run cannot hold a bridge keeps the contact layout, [0..2] alone
   // (SIZE_CONTACT); the first run that can hold one widens it (widen_history).
   enum { HIST_SHEAR = 0, HIST_BRIDGE = 3, SIZE_CONTACT = 3, SIZE_BRIDGE = 3 + CB_BRIDGE_DOUBLES };
+  // the restart settings' format: 2 (0 and 1 were the friction setting of earlier files)
+  enum { SETTINGS_FORMAT = 2 };
   // How bridges get their liquid.
   enum { LIQUID_FIXED = 0, LIQUID_PROTOCOL1, LIQUID_PROTOCOL2, LIQUID_PROTOCOL3 };
   // Values of single() in svector (compute pair/local p1 ... p8).
@@ -107,8 +109,7 @@ class PairGranCapillary : public Pair {
   // The constants of the pair loops for one type pair, derived in init_one: one cache line
   // per pair instead of a pointer chase per coefficient.
   struct TypePair {
-    double kn, kt, mu;
-    double damping_coefficient;    // 2 alpha sqrt(k_n): the dashpot is this times sqrt(m_eff)
+    cb_contact_law contact;        // k_n, k_t, alpha_n, mu and the dashpot rule (the core's)
     double formation_volume;       // a new bridge's volume in liquid mode fixed (0: none forms)
     double volume;                 // the pair_coeff volume (0: never a bridge)
     double cutsq;                  // the neighbor cutoff squared
@@ -130,9 +131,7 @@ class PairGranCapillary : public Pair {
     int nlocal, newton_pair;
   };
 
-  int friction_wet;    // 1: Coulomb limit mu (f_contact + f_capillary); 0: mu f_contact
-  double dashpot_floor;    // lower bound of the closing speed in the dashpot: 0 (approach
-                           // only, Richefeu 2007 eq. 3) or -inf (both ways, 'dashpot both')
+  cb_dashpot_rule dashpot;    // approach (Richefeu 2007 eq. 3), both, repulsive
   double dt;
   int freeze_group_bit;
 

@@ -9,7 +9,8 @@
  *
  * Forces on sphere 1 along +x (towards sphere 2):  f1 = capillary - contact
  *   capillary = cb_force(law, r1, r2, bridge volume, gap) while the bridge exists, else 0
- *   contact   = k_n (-gap) + damping    for gap < 0 (Richefeu 2007 eq. 2), else 0
+ *   contact   = cb_contact_normal_force (the engines' contact law, dashpot approach):
+ *               k_n (-gap) + damping    for gap < 0 (Richefeu 2007 eq. 2), else 0
  *   damping   = 2 alpha_n sqrt(m k_n) (-gap_rate)   for gap < 0 and gap_rate < 0 only
  *               (eq. 3: in contact and approaching), gap_rate = v - v1 (half-step v1),
  *               m = m1 m2 / (m1 + m2), m_i = 4 pi / 3 r_i^3 density (LAMMPS's rmass)
@@ -78,7 +79,8 @@ enum {
 typedef struct pulloff {
     const cb_law *law;
     double r1, r2, volume, radsum;
-    double kn, eta;   /* spring stiffness, damping coefficient 2 alpha sqrt(m k_n) */
+    cb_contact_law contact; /* Richefeu eqs. 2-3, the core's (as the engines') */
+    double sqrt_mass;       /* sqrt of the effective mass m1 m2 / (m1 + m2) */
     double velocity;  /* of sphere 2 */
 } pulloff;
 
@@ -103,12 +105,7 @@ static cb_status compute_forces(const pulloff *p, double x1, double v1, double x
                           NULL);
         if (status != CB_OK) return status;
     }
-    out->contact = 0.0;
-    if (out->gap < 0.0) {
-        double gap_rate = p->velocity - v1;
-        out->contact = p->kn * (-out->gap);
-        if (gap_rate < 0.0) out->contact += p->eta * (-gap_rate);
-    }
+    out->contact = cb_contact_normal_force(&p->contact, out->gap, p->velocity - v1, p->sqrt_mass);
     out->f1 = out->capillary - out->contact;
     return CB_OK;
 }
@@ -159,13 +156,19 @@ int cmd_pulloff(int argc, char **argv)
     p.r2 = options[R2].number;
     p.volume = options[VOLUME].number;
     p.radsum = p.r1 + p.r2;
-    p.kn = options[KN].number;
     p.velocity = options[VELOCITY].number;
     double density = options[DENSITY].number;
     double m1 = 4.0 * CB_PI / 3.0 * p.r1 * p.r1 * p.r1 * density;
     double m2 = 4.0 * CB_PI / 3.0 * p.r2 * p.r2 * p.r2 * density;
     double m = m1 * m2 / (m1 + m2);
-    p.eta = 2.0 * options[DAMPING].number * sqrt(m * p.kn);
+    p.sqrt_mass = sqrt(m);
+    const double kn = options[KN].number;
+    cb_message msg;
+    if (cb_contact_law_init(&p.contact, kn, 0.0, options[DAMPING].number, 0.0,
+                            CB_DASHPOT_APPROACH, &msg) != CB_OK) {
+        cb_law_release(&law);
+        return cli_runtime_error(name, "%s", msg.text);
+    }
 
     double rupture = 0.0, capillary_stiffness = 0.0;
     cb_status status = cb_rupture_distance(&law, p.r1, p.r2, p.volume, &rupture);
@@ -175,10 +178,10 @@ int cmd_pulloff(int argc, char **argv)
         cb_law_release(&law);
         return cli_status_error(name, "rupture distance", status);
     }
-    double dt_elastic = 0.02 * CB_PI * sqrt(m / p.kn);
+    double dt_elastic = 0.02 * CB_PI * sqrt(m / kn);
     double dt_pull = rupture / (p.velocity * 2000.0);
     double dt = options[DT].given ? options[DT].number : fmin(dt_elastic, dt_pull);
-    double stiffest = fmax(p.kn, capillary_stiffness);
+    double stiffest = fmax(kn, capillary_stiffness);
     if (dt > 0.1 * CB_PI * sqrt(m / stiffest))
         fprintf(stderr,
                 "capbridge pulloff: warning: dt = %g s exceeds 10 %% of pi sqrt(m / k) = %g s "
@@ -203,8 +206,8 @@ int cmd_pulloff(int argc, char **argv)
     printf("\n# law = %s, gamma = %.17g N/m, theta = %.17g deg\n", cb_model_name(law.model),
            law.surface_tension, law.contact_angle * 180.0 / CB_PI);
     printf("# m1 = %.17g kg, m2 = %.17g kg, reduced_mass = %.17g kg\n", m1, m2, m);
-    printf("# kn = %.17g N/m, damping_coefficient = %.17g kg/s, velocity = %.17g m/s\n", p.kn,
-           p.eta, p.velocity);
+    printf("# kn = %.17g N/m, damping_coefficient = %.17g kg/s, velocity = %.17g m/s\n", kn,
+           p.contact.damping_factor * p.sqrt_mass, p.velocity);
     printf("# rupture_distance = %.17g m\n", rupture);
     printf("# dt = %.17g s (%s)\n", dt,
            options[DT].given ? "given"
