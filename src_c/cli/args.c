@@ -177,8 +177,10 @@ static int parse_law(cli_request *request, int argc, char **argv, int *next)
         return cli_usage_error(cmd, "missing law: the first argument must be one of %s",
                                cb_law_names());
     cb_model model;
+    cli_echo shown;
     if (cb_model_from_name(argv[0], &model) != CB_OK)
-        return cli_usage_error(cmd, "unknown law '%s': allowed %s", argv[0], cb_law_names());
+        return cli_usage_error(cmd, "unknown law %s: allowed %s",
+                               cli_quote(&shown, argv[0], strlen(argv[0])), cb_law_names());
     cb_status status = cb_law_init(request->law, model, CLI_DEFAULT_GAMMA, CLI_DEFAULT_THETA);
     if (status != CB_OK) return cli_status_error(cmd, "law initialisation", status);
 
@@ -196,7 +198,8 @@ static int parse_law(cli_request *request, int argc, char **argv, int *next)
             status = cb_law_configure(&scratch, keyword, "", &msg);
             if (status == CB_ERR_UNKNOWN_KEYWORD && strncmp(msg.text, "unknown keyword", 15) == 0)
                 return cli_usage_error(cmd, "law %s: %s", argv[0], msg.text);
-            return cli_usage_error(cmd, "law %s: keyword '%s' needs a value", argv[0], keyword);
+            return cli_usage_error(cmd, "law %s: keyword %s needs a value", argv[0],
+                                   cli_quote(&shown, keyword, strlen(keyword)));
         }
         status = cb_law_configure_once(request->law, &given, keyword, value, &msg);
         if (status != CB_OK)
