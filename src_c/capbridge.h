@@ -305,6 +305,68 @@ static inline int cb_contact_tangential_force(const cb_contact_law *law, double 
     return 1;
 }
 
+/* ------------------------------------------- the engines' checks, one rule each */
+
+/* The radii one atom type has in a run (the smallest and the largest, > 0). */
+typedef struct cb_radius_range {
+    double min, max;
+} cb_radius_range;
+
+/* The engines' neighbor reach exceeds the largest rupture distance in use by this
+ * fraction: the first step beyond a bridge's rupture distance must still visit the pair
+ * (LIGGGHTS visits a pair only within its contact distance factor; the margin is the slack
+ * a pair may move in one step). */
+#define CB_REACH_MARGIN 0.05
+
+/* The neighbor reach of bridges of up to `volume` between radii of these two ranges:
+ * design_rupture, the largest rupture distance over a 5 x 5 grid of the two ranges (ends
+ * included: every law's rupture rule but the table is monotone in each radius, and the
+ * grid covers the table's), the law extended beyond its validity (a bridge that exists
+ * must be kept whatever its radii); reach = design_rupture (1 + CB_REACH_MARGIN); and
+ * reach_ratio, the largest reach / (r1 + r2) over the grid, for an engine whose neighbor
+ * distance is a multiple of the radius sum (LIGGGHTS: contact_distance_factor =
+ * 1 + reach_ratio).  All three 0 for volume 0.  Outputs may be NULL. */
+cb_status cb_reach(const cb_law *law, cb_radius_range range1, cb_radius_range range2,
+                   double volume, double *design_rupture, double *reach, double *reach_ratio);
+
+/* The one behaviour of a bridge beyond the reach: a held bridge whose gap exceeds the
+ * design rupture distance of the reach (a volume above the design volume, a grain that
+ * grew) is ruptured now, its liquid released as at any rupture, before its pair can leave
+ * the engine's neighbor list with it; the engine counts it and warns once. */
+static inline int cb_bridge_beyond_reach(double gap, double design_rupture)
+{
+    return gap > design_rupture;
+}
+
+/* The bridge volume a liquid protocol's reach is built for when the user gives none:
+ * the larger of twice the mean liquid per grain times (r_max / r_min)^3 (the Protocol 1
+ * volume, eq. 14 V_b = alpha R_g^3, of a bridge between the largest grains with at least
+ * one bridge per grain) and twice the largest free liquid of one grain (a Protocol 2
+ * bridge takes the free liquid of both its grains). */
+cb_status cb_protocol_design_volume(double total_liquid, double grains, cb_radius_range radii,
+                                    double largest_free_liquid, double *volume);
+
+/* The time step the engines warn above: Richefeu 2007 §2 sets it "10% below the elastic
+ * response time pi sqrt(m/K_n)", which we read, as DEM practice does, as a tenth of it:
+ * CB_TIMESTEP_FRACTION pi sqrt(m / k), m the smallest mass, k the larger of k_n and the
+ * capillary stiffness bound (cb_capillary_stiffness_bound) at the corners of the two radius
+ * ranges for each volume given (the smallest and the largest in use; law NULL or no
+ * volumes: k_n alone).  *limit is HUGE_VAL when k is 0; *capillary_stiffness may be NULL. */
+#define CB_TIMESTEP_FRACTION 0.1
+cb_status cb_timestep_limit(const cb_law *law, cb_radius_range range1, cb_radius_range range2,
+                            const double *volumes, size_t n_volumes, double smallest_mass,
+                            double normal_stiffness, double *limit,
+                            double *capillary_stiffness);
+
+/* The widths of a periodic cell between opposite faces, from the upper-triangular inverse
+ * h^-1 of its edge matrix in LAMMPS's (and LIGGGHTS's) order xx, yy, zz, yz, xz, xy:
+ * 1 / |row k of h^-1| (orthogonal boxes: the edge lengths). */
+void cb_cell_widths(const double inverse[6], double width[3]);
+/* With bridges, every periodic width must be at least twice the neighbor cutoff: else two
+ * atoms meet as two periodic images, each holding a copy of their bridge (liquid from
+ * nothing).  Returns the first direction (0, 1, 2) that is too narrow, or -1. */
+int cb_periodic_too_narrow(const double width[3], const int periodic[3], double cutoff);
+
 /* -------------------------------------------------------- bridge state */
 
 /* The state of the liquid bridge of one pair, kept by the engine in its pair history and
@@ -427,6 +489,24 @@ cb_status cb_protocol2_take(double *free1, double *free2, double *bridge_volume)
  * centre (the share is then kept as the particle's free liquid). */
 cb_status cb_protocol3_receiver(double centre_height, const double *contact_height, size_t n,
                                 long *index);
+/* Protocol 3, one bridge at a time (an engine meets a grain's bridges in no set order): 1
+ * when a bridge whose contact point lies `offset` above the grain's centre (< 0: on the
+ * lower hemisphere), to the grain of id `partner`, is a better receiver than the best so far
+ * (best_partner 0: none yet).  Lower is better (cb_protocol3_receiver's rule); an equal
+ * height goes to the smaller partner id, so that every rank and every order choose alike. */
+int cb_protocol3_better(double offset, long long partner, double best_offset,
+                        long long best_partner);
+
+/* Protocols 2 and 3, one grain between the two phases of a step: the liquid its broken
+ * bridges released this step goes to its Protocol 3 receiver (to_receiver 1: *deposit) or
+ * to its free liquid; then, if `new_contacts` (k) dry pairs of it may form a bridge now, its
+ * free liquid is offered to them in k equal parts (*offer each; *free_liquid 0): the whole
+ * of it, Richefeu's "the new bridge takes it" with several new bridges at once.  The two
+ * offers of a pair form its bridge (cb_protocol2_take).  Conserves liquid: deposit +
+ * free + k offer = released + free before, up to the rounding of one division. */
+cb_status cb_protocol_grain_step(double released, int to_receiver, double new_contacts,
+                                 double *free_liquid, double *deposit, double *offer);
+
 /* The share of a released volume that goes to particle 1 (diameter proportion);
  * 0 for invalid input (a non-finite or non-positive radius or volume). */
 double cb_protocol_share(double volume, double r1, double r2);

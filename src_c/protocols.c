@@ -111,3 +111,42 @@ cb_status cb_protocol3_receiver(double centre_height, const double *contact_heig
     *index = best;
     return CB_OK;
 }
+
+int cb_protocol3_better(double offset, long long partner, double best_offset,
+                        long long best_partner)
+{
+    double heights[2];
+    size_t n = 0;
+    if (best_partner != 0) heights[n++] = best_offset;
+    heights[n++] = offset;
+    long index = -1;
+    if (cb_protocol3_receiver(0.0, heights, n, &index) != CB_OK || index < 0) return 0;
+    if (n == 1 || index == 1) return 1;
+    /* the receiver rule keeps the first of equal heights: the tie goes by id */
+    return offset == best_offset && partner < best_partner;
+}
+
+cb_status cb_protocol_grain_step(double released, int to_receiver, double new_contacts,
+                                 double *free_liquid, double *deposit, double *offer)
+{
+    if (!free_liquid || !deposit || !offer) return CB_ERR_NULL;
+    if (!isfinite(released) || !isfinite(new_contacts) || !isfinite(*free_liquid))
+        return CB_ERR_NOT_FINITE;
+    if (released < 0.0 || new_contacts < 0.0 || *free_liquid < 0.0) return CB_ERR_NEGATIVE;
+    double free_now = *free_liquid, deposited = 0.0, offered = 0.0;
+    if (released > 0.0) {
+        if (to_receiver)
+            deposited = released;
+        else
+            free_now += released;
+    }
+    if (new_contacts > 0.0 && free_now > 0.0) {
+        offered = free_now / new_contacts;
+        free_now = 0.0;
+    }
+    if (!isfinite(free_now)) return CB_ERR_RANGE;
+    *free_liquid = free_now;
+    *deposit = deposited;
+    *offer = offered;
+    return CB_OK;
+}
