@@ -8,6 +8,9 @@
  * word-valued keywords (EnumSetting) but keeps the method that registers them private.
  * `cohesion capillary` needs words (`law willett`, `rupture lian`, `liquid protocol2`), so
  * this header adds a Setting subclass for words and inserts it into the Settings' map.
+ * The model's on/off keywords are words too: LIGGGHTS's on/off reader reads the value past
+ * the end of the command when the keyword is its last word (a std::string from NULL, which
+ * aborts the run).
  *
  * The map is a private member of Settings. It is reached with the one access path C++
  * leaves open on purpose: names used in an explicit instantiation are not access checked
@@ -73,7 +76,8 @@ class WordSetting : public Setting {
     {
         if (name != args[0]) return 0;
         if (args[1] == NULL || last_of_command(args)) {
-            error_message = "cohesion model capillary: keyword '" + name + "' needs a value";
+            error_message = "cohesion model capillary: keyword '" + name + "' needs a value" +
+                            allowed_values();
             return -1;
         }
         if (given_) {
@@ -95,6 +99,15 @@ class WordSetting : public Setting {
     void print_value(FILE *out) { fprintf(out, "%s", current_.c_str()); }
 
   private:
+    /* " (allowed: ...)" as the check names them when it refuses an empty word, or "" */
+    std::string allowed_values() const
+    {
+        std::string why;
+        if (!check_ || check_(name, "", why)) return "";
+        const std::string::size_type at = why.find("; allowed: ");
+        return at == std::string::npos ? "" : " (" + why.substr(at + 2) + ")";
+    }
+
     /* args[0] is the last argument of the command being read */
     bool last_of_command(char **args) const
     {

@@ -130,6 +130,11 @@ namespace capbridge_liggghts
         static const char *const allowed[] = {"fixed", "protocol2", NULL};
         return check_one_of(k, v, allowed, why);
     }
+    inline bool check_on_off(const std::string &k, const std::string &v, std::string &why)
+    {
+        static const char *const allowed[] = {"on", "off", NULL};
+        return check_one_of(k, v, allowed, why);
+    }
     inline bool check_number(const std::string &k, const std::string &v, std::string &why)
     {
         double x = 0.0;
@@ -209,13 +214,18 @@ namespace ContactModels {
       register_word(settings, "validity", "extend", &check_validity, validity_, NULL, input);
       register_word(settings, "richefeu_c", "0.9", &check_number, richefeu_c_, &c_given_, input);
       register_word(settings, "liquid", "fixed", &check_liquid, liquid_, NULL, input);
-      settings.registerOnOff("capillary_friction", capillary_friction_, true);
-      settings.registerOnOff("tally", tally_, false);
+      // on/off as words: LIGGGHTS's own on/off reader reads past the end of the command
+      // when the keyword is its last word (std::string from NULL: SIGABRT)
+      register_word(settings, "capillary_friction", "on", &check_on_off, capillary_friction_word_,
+                    NULL, input);
+      register_word(settings, "tally", "off", &check_on_off, tally_word_, NULL, input);
     }
 
     inline void postSettings(IContactHistorySetup *, ContactModelBase *)
     {
       protocol2_ = (liquid_ == "protocol2");
+      capillary_friction_ = (capillary_friction_word_ == "on");
+      tally_ = (tally_word_ == "on");
       if (wall_) return;
       if (law_given_) {
         if (cb_model_from_name(law_name_.c_str(), &model_) != CB_OK)
@@ -901,6 +911,7 @@ namespace ContactModels {
     int history_offset_;
     std::string law_name_, rupture_, overlap_, validity_, richefeu_c_, liquid_;
     bool law_given_, c_given_;
+    std::string capillary_friction_word_, tally_word_;  // on/off
     bool capillary_friction_, tally_;
     bool protocol2_;
     cb_model model_;

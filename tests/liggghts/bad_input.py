@@ -61,6 +61,13 @@ CASES = [
     # the last word of the command: what follows in LIGGGHTS's argument array is an earlier
     # command's, not a value
     ("a keyword without its value", ALL, "capillary law", "off", ["keyword 'law' needs a value"]),
+    # on/off keywords as the last word: LIGGGHTS's own on/off reader aborted (SIGABRT)
+    ("tally as the last word", ALL, "capillary law willett tally", "off",
+     ["keyword 'tally' needs a value", "allowed: on, off"]),
+    ("capillary_friction as the last word", ALL, "capillary law willett capillary_friction",
+     "off", ["keyword 'capillary_friction' needs a value", "allowed: on, off"]),
+    ("tally with another word", ALL, "capillary law willett tally yes", "off",
+     ["tally 'yes'", "allowed: on, off"]),
     ("a keyword given twice", ALL, "capillary law willett law richefeu", "off",
      ["keyword 'law' is given twice"]),
     ("unknown rupture rule", ALL, "capillary law willett rupture bar", "off",
