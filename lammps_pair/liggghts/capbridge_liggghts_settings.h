@@ -10,7 +10,7 @@
  * this header adds a Setting subclass for words and inserts it into the Settings' map.
  * The model's on/off keywords are words too: LIGGGHTS's on/off reader reads the value past
  * the end of the command when the keyword is its last word (a std::string from NULL, which
- * aborts the run).
+ * aborts the run).  The word checks of the model's keywords are at the end of this file.
  *
  * The map is a private member of Settings. It is reached with the one access path C++
  * leaves open on purpose: names used in an explicit instantiation are not access checked
@@ -24,6 +24,7 @@
 #ifndef CAPBRIDGE_LIGGGHTS_SETTINGS_H_
 #define CAPBRIDGE_LIGGGHTS_SETTINGS_H_
 
+#include "capbridge.h"
 #include "input.h"
 #include "settings.h"
 
@@ -150,6 +151,64 @@ inline void register_word(Settings &settings, const std::string &keyword,
     }
     if (given) *given = false;
     setting->register_target(target, given);
+}
+
+/* The word checks of `cohesion capillary`'s keywords (the message is the complete error). */
+inline bool check_law(const std::string &, const std::string &value, std::string &why)
+{
+    cb_model model;
+    if (cb_model_from_name(value.c_str(), &model) == CB_OK) return true;
+    why = "cohesion model capillary: law '" + value + "' is unknown; allowed: " +
+          std::string(cb_law_names());
+    return false;
+}
+
+inline bool check_one_of(const std::string &keyword, const std::string &value,
+                         const char *const *allowed, std::string &why)
+{
+    std::string list;
+    for (int k = 0; allowed[k]; ++k) {
+        if (value == allowed[k]) return true;
+        if (k) list += ", ";
+        list += allowed[k];
+    }
+    why = "cohesion model capillary: " + keyword + " '" + value + "' is unknown; allowed: " +
+          list;
+    return false;
+}
+
+inline bool check_rupture(const std::string &k, const std::string &v, std::string &why)
+{
+    static const char *const allowed[] = {"default", "lian", "willett", "willett/unequal", "exact", NULL};
+    return check_one_of(k, v, allowed, why);
+}
+inline bool check_overlap(const std::string &k, const std::string &v, std::string &why)
+{
+    static const char *const allowed[] = {"contact", "none", NULL};
+    return check_one_of(k, v, allowed, why);
+}
+inline bool check_validity(const std::string &k, const std::string &v, std::string &why)
+{
+    static const char *const allowed[] = {"extend", "strict", NULL};
+    return check_one_of(k, v, allowed, why);
+}
+inline bool check_liquid(const std::string &k, const std::string &v, std::string &why)
+{
+    static const char *const allowed[] = {"fixed", "protocol2", NULL};
+    return check_one_of(k, v, allowed, why);
+}
+inline bool check_on_off(const std::string &k, const std::string &v, std::string &why)
+{
+    static const char *const allowed[] = {"on", "off", NULL};
+    return check_one_of(k, v, allowed, why);
+}
+inline bool check_number(const std::string &k, const std::string &v, std::string &why)
+{
+    double x = 0.0;
+    if (cb_parse_number(v.c_str(), &x)) return true;
+    why = "cohesion model capillary: " + k + " '" + v +
+          "' is not a decimal number within double range";
+    return false;
 }
 
 } /* namespace capbridge_liggghts */

@@ -28,6 +28,10 @@
      - parameters come from fix property/global (surfaceTension, contactAngle,
        bridgeVolume), per-particle free liquid from fix property/atom freeLiquid.
      - walls are dry: a fix wall/gran with `cohesion capillary` adds no force.
+     - beside this file: capbridge_liggghts_settings.h (the keywords), _reach.h (how far
+       LIGGGHTS visits a pair: the contact distance factor), _liquid.h (Protocol 2's liquid
+       account: warnings when liquid leaves with atoms or a new pair_style), _timestep.h
+       (the time-step check against the capillary stiffness).
 
    Parallel consistency (LIGGGHTS requires `newton off` with contact history): a pair
    whose atoms live on two ranks is computed on both, each rank updating only its own
@@ -50,6 +54,9 @@ COHESION_MODEL(COHESION_CAPILLARY,capillary,9)
 #include "contact_models.h"
 #include "cohesion_model_base.h"
 #include "capbridge_liggghts_settings.h"
+#include "capbridge_liggghts_liquid.h"
+#include "capbridge_liggghts_reach.h"
+#include "capbridge_liggghts_timestep.h"
 #include "capbridge.h"
 #include "global_properties.h"
 #include "fix_property_atom.h"
@@ -85,64 +92,6 @@ namespace capbridge_liggghts
 {
     /* false for NaN and infinities (std::isfinite is C++11) */
     inline bool is_finite(const double x) { return x == x && x - x == 0.0; }
-
-    /* Word checks for the keywords (the message is the complete error). */
-    inline bool check_law(const std::string &, const std::string &value, std::string &why)
-    {
-        cb_model model;
-        if (cb_model_from_name(value.c_str(), &model) == CB_OK) return true;
-        why = "cohesion model capillary: law '" + value + "' is unknown; allowed: " +
-              std::string(cb_law_names());
-        return false;
-    }
-
-    inline bool check_one_of(const std::string &keyword, const std::string &value,
-                             const char *const *allowed, std::string &why)
-    {
-        std::string list;
-        for (int k = 0; allowed[k]; ++k) {
-            if (value == allowed[k]) return true;
-            if (k) list += ", ";
-            list += allowed[k];
-        }
-        why = "cohesion model capillary: " + keyword + " '" + value + "' is unknown; allowed: " +
-              list;
-        return false;
-    }
-
-    inline bool check_rupture(const std::string &k, const std::string &v, std::string &why)
-    {
-        static const char *const allowed[] = {"default", "lian", "willett", "willett/unequal", "exact", NULL};
-        return check_one_of(k, v, allowed, why);
-    }
-    inline bool check_overlap(const std::string &k, const std::string &v, std::string &why)
-    {
-        static const char *const allowed[] = {"contact", "none", NULL};
-        return check_one_of(k, v, allowed, why);
-    }
-    inline bool check_validity(const std::string &k, const std::string &v, std::string &why)
-    {
-        static const char *const allowed[] = {"extend", "strict", NULL};
-        return check_one_of(k, v, allowed, why);
-    }
-    inline bool check_liquid(const std::string &k, const std::string &v, std::string &why)
-    {
-        static const char *const allowed[] = {"fixed", "protocol2", NULL};
-        return check_one_of(k, v, allowed, why);
-    }
-    inline bool check_on_off(const std::string &k, const std::string &v, std::string &why)
-    {
-        static const char *const allowed[] = {"on", "off", NULL};
-        return check_one_of(k, v, allowed, why);
-    }
-    inline bool check_number(const std::string &k, const std::string &v, std::string &why)
-    {
-        double x = 0.0;
-        if (cb_parse_number(v.c_str(), &x)) return true;
-        why = "cohesion model capillary: " + k + " '" + v +
-              "' is not a decimal number within double range";
-        return false;
-    }
 
     /* A pair formed in this pass under Protocol 2: finished in endPass(). */
     struct Candidate {
@@ -182,9 +131,11 @@ namespace ContactModels {
       fix_bridged_(NULL),
       fix_count_(NULL),
       updating_(false),
-      setup_bridged_(0.0),
-      setup_total_(-1.0),
-      counting_(false)
+      counting_(false),
+      timing_(false),
+      account_(lmp),
+      reach_(lmp),
+      timestep_(lmp)
     {
       // walls are dry: no history, no properties, no force
       if (!wall_) {
@@ -232,13 +183,8 @@ namespace ContactModels {
           fail_all("cohesion model capillary: law '" + law_name_ + "' is unknown; allowed: " +
                    cb_law_names());
       }
-      // the per-atom arrays of the model exist from the pair_style command on, so that
-      // dumps and computes defined before the first run can refer to them
-      if (protocol2_) fix_formations_ = internal_fix("capillaryFormations", "yes");
-      if (tally_) {
-        fix_bridged_ = internal_fix("bridgedLiquid", "no");
-        fix_count_ = internal_fix("bridgeCount", "no");
-      }
+      connect_internal_fixes();
+      if (protocol2_) account_.create();
     }
 
     void connectToProperties(PropertyRegistry & registry)
@@ -272,7 +218,10 @@ namespace ContactModels {
       check_properties();
       build_laws();
       connect_per_atom();
-      register_reach(registry);
+      const capbridge_liggghts::ReachLaws laws = {&laws_, &pair_law_, ntypes_, law_name_.c_str(),
+                                                  rupture_.c_str(), validity_.c_str()};
+      reach_.register_factor(registry, laws, protocol2_ ? NULL : bridge_volume_,
+                             protocol2_ ? fix_free_->vector_atom : NULL, history_offset_);
     }
 
     void beginPass(SurfacesIntersectData & sidata, ForceData &, ForceData &)
@@ -282,11 +231,15 @@ namespace ContactModels {
       // exists at the start is formed there); not for compute pair/gran/local
       updating_ = sidata.computeflag != 0;
       if (!updating_) return;
+      // the census passes: setup and re-neighboring (when atoms may have left or come)
+      const bool census = update->setupflag || neighbor->ago == 0;
       if (neighbor->ago == 0) check_periodic_images();    // the box as the list was built
-      counting_ = protocol2_ && update->setupflag;
+      counting_ = protocol2_ && census;
+      timing_ = census && timestep_.wanted();
+      if (timing_) timestep_.begin(ntypes_);
       const int nall = atom->nlocal + atom->nghost;
       if (protocol2_) {
-        setup_bridged_ = 0.0;
+        if (counting_) account_.begin(fix_free_->vector_atom);
         fix_free_->do_forward_comm();
         double *nform = fix_formations_->vector_atom;
         for (int k = 0; k < nall; ++k) nform[k] = 0.0;
@@ -304,38 +257,16 @@ namespace ContactModels {
     {
       if (wall_ || !updating_) return;
       updating_ = false;
-      if (!protocol2_) return;
-      finish_formations();
-      if (update->setupflag) check_liquid_total();
+      if (protocol2_) finish_formations();
+      if (counting_) account_.end(fix_free_->vector_atom);
+      if (timing_) timestep_.finish(laws_, pair_law_, protocol2_ ? NULL : bridge_volume_);
     }
 
-    /* Protocol 2 conserves the liquid within a run; at the setup of each run the total
-     * (free + bridges) is compared with the last run's, so that liquid that left or came
-     * between runs or with atoms lost in one (delete_atoms, which with compress yes also
-     * scrambles the bridges of the renumbered atoms) is reported, not silently taken. */
-    void check_liquid_total()
+    /* a bridge that exists after this pass's transitions, in a census pass */
+    void census_bridge(const int itype, const int jtype, const bool j_local, const double volume)
     {
-      const double *free_liquid = fix_free_->vector_atom;
-      double local = setup_bridged_, total = 0.0;
-      for (int i = 0; i < atom->nlocal; ++i) local += free_liquid[i];
-      MPI_Allreduce(&local, &total, 1, MPI_DOUBLE, MPI_SUM, world);
-      const double change = total - setup_total_;
-      if (setup_total_ > 0.0 && std::fabs(change) > 1e-9 * setup_total_ && comm->me == 0) {
-        char text[480];
-        snprintf(text, sizeof text,
-                 "cohesion model capillary: the liquid changed by %.17g (%+.3g of it) since "
-                 "the start of the last run: free liquid set, atoms deleted or lost with their "
-                 "liquid, or atom IDs renumbered (delete_atoms with compress yes), which "
-                 "scrambles the bridges of the renumbered atoms", change, change / setup_total_);
-        error->warning(FLERR, text);
-      }
-      setup_total_ = total;
-    }
-
-    /* a bridge's liquid in this rank's setup count: half for each end it owns */
-    void count_setup_bridge(const bool j_local, const double volume)
-    {
-      if (counting_) setup_bridged_ += j_local ? volume : 0.5 * volume;
+      if (counting_) account_.add_bridge(j_local, volume);
+      if (timing_ && protocol2_) timestep_.add_bridge(itype, jtype, volume);
     }
 
     inline void endSurfacesIntersect(SurfacesIntersectData &, ForceData &, ForceData &) {}
@@ -380,7 +311,7 @@ namespace ContactModels {
     double pair_force(SurfacesCloseData & d, const double gap, const double *en)
     {
       if (!d.contact_history)
-        error->one(FLERR, "cohesion model capillary: no contact history for a pair (internal)");
+        fail_one("cohesion model capillary: no contact history for a pair (internal)");
       double * const hist = &d.contact_history[history_offset_];
       cb_bridge bridge;
       std::memcpy(&bridge, hist, sizeof bridge);
@@ -471,7 +402,7 @@ namespace ContactModels {
       }
       // keeps the pair's history through re-neighboring while the bridge exists
       if (d.contact_flags) *d.contact_flags |= CONTACT_COHESION_MODEL;
-      if (updating_) count_setup_bridge(j_local, bridge.volume);    // (setup pass only)
+      if (updating_) census_bridge(d.itype, d.jtype, j_local, bridge.volume);
       if (!have_force)
         check(cb_bridge_force(law, ra, rb, gap, &bridge, &capillary), "force", d, gap,
               bridge.volume);
@@ -510,7 +441,7 @@ namespace ContactModels {
         if (c.contact_flags) *c.contact_flags |= CONTACT_COHESION_MODEL;
         const bool j_local = c.j < nlocal;
         if (tally_) tally(c.i, j_local ? c.j : -1, bridge.volume);
-        count_setup_bridge(j_local, bridge.volume);
+        census_bridge(c.itype, c.jtype, j_local, bridge.volume);
         // attraction: i towards j (en points from j to i)
         for (int k3 = 0; k3 < 3; ++k3) {
           f[c.i][k3] -= capillary * c.en[k3];
@@ -589,6 +520,18 @@ namespace ContactModels {
       error->all(FLERR, message.c_str());
     }
 
+    /* Error::one writes to the screen only, unflushed, before MPI_Abort: when the screen is
+     * a pipe or a file, or -screen none, the message is lost. Into the log file too. */
+    void fail_one(const std::string &message)
+    {
+      if (logfile) {
+        fprintf(logfile, "ERROR on proc %d: %s\n", comm->me, message.c_str());
+        fflush(logfile);
+      }
+      if (screen) fflush(screen);
+      error->one(FLERR, message.c_str());
+    }
+
     void check(const cb_status status, const char *what, const SurfacesCloseData & d,
                const double gap, const double volume)
     {
@@ -605,7 +548,7 @@ namespace ContactModels {
                "%g and %g m, gap %g m, volume %g m^3): %s",
                what, atom->tag[i], atom->tag[j], cb_model_name(model_), atom->radius[i],
                atom->radius[j], gap, volume, cb_status_message(status));
-      error->one(FLERR, text);
+      fail_one(text);
     }
 
     /* A bridge must rupture while LIGGGHTS still visits its pair: the pair loop calls
@@ -622,17 +565,9 @@ namespace ContactModels {
       double rupture = 0.0;
       check_at(cb_rupture_distance(law, ra, rb, volume, &rupture), "rupture distance", i, j,
                0.0, volume);
-      const double reach = (neighbor->contactDistanceFactor - 1.0) * radsum;
-      if (rupture * reach_margin() <= reach) return;
-      char text[512];
-      snprintf(text, sizeof text,
-               "cohesion model capillary: the bridge between particles %d and %d (volume %g "
-               "m^3) ruptures at a gap of %g m, beyond the gap %g m up to which LIGGGHTS "
-               "visits the pair (contact distance factor %g); raise it with "
-               "'neigh_modify contact_distance_factor %.4g'",
-               atom->tag[i], atom->tag[j], volume, rupture, reach / reach_margin(),
-               neighbor->contactDistanceFactor, 1.0 + 1.1 * reach_margin() * rupture / radsum);
-      error->one(FLERR, text);
+      std::string why;
+      if (!reach_.check(law, ra, rb, radsum, volume, rupture, i, j, protocol2_, why))
+        fail_one(why);
     }
 
     /* ---------------------------------------------------------------- set-up */
@@ -748,21 +683,16 @@ namespace ContactModels {
       law_key_.clear();
     }
 
-    FixPropertyAtom *internal_fix(const char *name, const char *comm_ghost)
+    /* the per-atom arrays of the model exist from the pair_style command on, so that dumps
+     * and computes defined before the first run can refer to them */
+    void connect_internal_fixes()
     {
-      Fix *fix = modify->find_fix_property(name, "property/atom", "scalar", 0, 0,
-                                           "cohesion model capillary", false);
-      if (!fix) {
-        const char *args[9] = {name, "all", "property/atom", name, "scalar",
-                               "no", comm_ghost, "no", "0."};
-        modify->add_fix(9, const_cast<char **>(args));
-        fix = modify->find_fix_property(name, "property/atom", "scalar", 0, 0,
-                                        "cohesion model capillary");
-        // its values are set (0) for every atom already; without this, the first
-        // run's setup would reset them after the setup force pass (Modify::setup)
-        fix->just_created = 0;
+      if (protocol2_)
+        fix_formations_ = capbridge_liggghts::internal_fix(modify, "capillaryFormations", "yes");
+      if (tally_) {
+        fix_bridged_ = capbridge_liggghts::internal_fix(modify, "bridgedLiquid", "no");
+        fix_count_ = capbridge_liggghts::internal_fix(modify, "bridgeCount", "no");
       }
-      return static_cast<FixPropertyAtom *>(fix);
     }
 
     /* LIGGGHTS sets the default values of a fix property/atom created since the last
@@ -799,112 +729,10 @@ namespace ContactModels {
         if (bad_all)
           error->all(FLERR, "cohesion model capillary: freeLiquid must be >= 0 and finite "
                             "for every particle");
-        fix_formations_ = internal_fix("capillaryFormations", "yes");
+        account_.connect();
       }
-      if (tally_) {
-        fix_bridged_ = internal_fix("bridgedLiquid", "no");
-        fix_count_ = internal_fix("bridgeCount", "no");
-      }
+      connect_internal_fixes();
     }
-
-    /* The pair loop visits a pair while r < contact_distance_factor * radsum. The
-     * factor must cover the largest rupture distance relative to the radius sum: it is
-     * estimated from the smallest and largest radius (particles and insertion fixes)
-     * and the largest bridge volume (bridgeVolume, or twice the largest free liquid, and
-     * the bridges that exist: held_volumes), with 10 % margin. check_reach_at() verifies
-     * every bridge when it forms. */
-    void register_reach(PropertyRegistry & registry)
-    {
-      const double rmin = registry.min_radius();
-      const double rmax = registry.max_radius();
-      if (!(rmin > 0.0) || !(rmax > 0.0) || rmin > 1e100) return;
-      const double radii[3][2] = {{rmin, rmin}, {rmin, rmax}, {rmax, rmax}};
-      double protocol2_volume = 0.0;
-      if (protocol2_) {
-        double most = 0.0;
-        const double *free_liquid = fix_free_->vector_atom;
-        for (int i = 0; i < atom->nlocal; ++i)
-          if (free_liquid[i] > most) most = free_liquid[i];
-        MPI_Allreduce(&most, &protocol2_volume, 1, MPI_DOUBLE, MPI_MAX, world);
-        protocol2_volume *= 2.0;
-      }
-      const std::vector<double> held = held_volumes();
-      double ratio = 0.0;
-      for (int a = 1; a <= ntypes_; ++a)
-        for (int b = a; b <= ntypes_; ++b) {
-          // an existing bridge formed under its law's validity for its own radii; at the
-          // bounding radii its rupture distance is taken as the law extends it
-          cb_law extended = *law_for(a, b);
-          extended.validity = CB_VALIDITY_EXTEND;
-          const double existing = std::max(held[a], held[b]);
-          for (int k = 0; existing > 0.0 && k < 3; ++k) {
-            double rupture = 0.0;
-            const cb_status status = cb_rupture_distance(&extended, radii[k][0], radii[k][1],
-                                                         existing, &rupture);
-            if (status != CB_OK) {
-              // (not reached with a valid history: the bridge formed with this volume)
-              char text[512];
-              snprintf(text, sizeof text,
-                       "cohesion model capillary: an existing bridge of %g m^3 (atom types "
-                       "%d %d) has no rupture distance with radii %g and %g m, so the reach "
-                       "cannot be set to keep it: law %s: %s",
-                       existing, a, b, radii[k][0], radii[k][1], law_name_.c_str(),
-                       cb_status_message(status));
-              error->all(FLERR, text);
-            }
-            ratio = std::max(ratio, rupture / (radii[k][0] + radii[k][1]));
-          }
-          const double volume = protocol2_ ? protocol2_volume : bridge_volume_[a][b];
-          if (!(volume > 0.0)) continue;
-          for (int k = 0; k < 3; ++k) {
-            double rupture = 0.0;
-            const cb_status status = cb_rupture_distance(law_for(a, b), radii[k][0],
-                                                         radii[k][1], volume, &rupture);
-            if (status != CB_OK) {
-              if (protocol2_) continue; // only an estimate; each bridge is checked later
-              char text[512];
-              snprintf(text, sizeof text,
-                       "cohesion model capillary: bridgeVolume %g m^3 of atom types %d %d "
-                       "with radii %g and %g m: law %s (rupture %s, validity %s): %s",
-                       volume, a, b, radii[k][0], radii[k][1], law_name_.c_str(),
-                       rupture_.c_str(), validity_.c_str(), cb_status_message(status));
-              error->all(FLERR, text);
-            }
-            const double r = rupture / (radii[k][0] + radii[k][1]);
-            if (r > ratio) ratio = r;
-          }
-        }
-      if (ratio > 0.0) neighbor->register_contact_dist_factor(1.0 + 1.1 * ratio);
-    }
-
-    /* The largest bridge that exists, per atom type, over all ranks: bridges read from a
-     * restart file, or kept from the last run, in fix contacthistory's per-atom partner
-     * arrays.  The liquid on offer now may not cover them (Protocol 2 once the free liquid
-     * is in bridges; a lower bridgeVolume), and a restart starts the contact distance
-     * factor again from 1: a bridge stretched beyond the reach would leave the neighbor
-     * list with its liquid, without a word. */
-    std::vector<double> held_volumes()
-    {
-      std::vector<double> local(ntypes_ + 1, 0.0), all(ntypes_ + 1, 0.0);
-      FixContactHistory *history = static_cast<FixContactHistory *>(
-          modify->find_fix_style_strict("contacthistory", 0));
-      if (history) {
-        const int *type = atom->type;
-        for (int i = 0; i < atom->nlocal; ++i)
-          for (int k = 0; k < history->n_partner(i); ++k) {
-            cb_bridge bridge;
-            std::memcpy(&bridge, history->contacthistory(i, k) + history_offset_,
-                        sizeof bridge);
-            if (bridge.active != 0.0 && bridge.volume > local[type[i]])
-              local[type[i]] = bridge.volume;
-          }
-      }
-      MPI_Allreduce(local.data(), all.data(), ntypes_ + 1, MPI_DOUBLE, MPI_MAX, world);
-      return all;
-    }
-
-    // the first step beyond the rupture distance must still be visited
-    static double reach_margin() { return 1.05; }
 
     // settings
     bool wall_;
@@ -929,10 +757,11 @@ namespace ContactModels {
     std::vector<double> released_;
     std::vector<capbridge_liggghts::Candidate> candidates_;
     bool updating_;
-    // Protocol 2: liquid in bridges counted in the setup pass (this rank's share), and
-    // the total liquid at the setup of the last run (< 0: none yet)
-    double setup_bridged_, setup_total_;
-    bool counting_;    // this pass counts the bridges' liquid (Protocol 2, setup)
+    bool counting_;    // this pass is a census of the liquid (Protocol 2: setup, re-neighboring)
+    bool timing_;      // this pass checks the time step (setup, re-neighboring; until it warned)
+    capbridge_liggghts::LiquidAccount account_;
+    capbridge_liggghts::Reach reach_;
+    capbridge_liggghts::TimestepCheck timestep_;
   };
 }
 }

@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
 """Bad input for `cohesion capillary`: each case must stop LIGGGHTS with an ERROR line
 that names the problem; plus the dry wall: a fix wall/gran with `cohesion capillary`
-warns and adds no capillary force.
+warns and adds no capillary force; and a bridge too small for LIGGGHTS's reach test, whose
+error must give a volume and a contact distance factor that work (both are run).
 
 usage: bad_input.py LIGGGHTS_ENV [--workdir DIR]
 """
 import os
+import re
 import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
@@ -118,6 +120,68 @@ run             1
 """
 
 
+# Two spheres overlapping by 1 um, Protocol 2 with {free} m^3 of free liquid each: the bridge
+# forms in the setup pass and is checked against the reach (contact distance factor)
+TINY_DECK = """fix freeLiquid all property/atom freeLiquid scalar yes yes no {free!r}
+pair_style      gran model hooke/stiffness tangential history cohesion capillary &
+                law willett liquid protocol2 tally on
+pair_coeff      * *
+{neigh}
+timestep        1e-6
+create_atoms    1 single 0 0 0 units box
+create_atoms    1 single 1.999e-3 0 0 units box
+set             atom * diameter 2e-3 density 2500
+fix             integrate all nve/sphere
+compute         bridged all reduce sum f_bridgedLiquid
+thermo_style    custom step c_bridged
+thermo_modify   format float %.17g norm no
+run             0
+"""
+
+
+def tiny_volume(env, workdir):
+    """A bridge far too small for the reach test (1e-300 m^3 per particle): the error must
+    name a smallest volume and a factor that work, not the factor in use.  Both are run:
+    with that volume (half per particle), and with 1e-300 and that factor, the bridge forms
+    (its liquid, read back, is what the particles gave) and the run ends normally."""
+    def run(name, free, neigh):
+        deck = os.path.join(workdir, "in." + name)
+        with open(deck, "w") as f:
+            f.write(HEADER.format(boundary="f f f", xlo=-0.01, xhi=0.01, zlo=-0.01,
+                                  newton="off", props="\n".join([GAMMA, THETA])) +
+                    TINY_DECK.format(free=free, neigh=neigh))
+        return lc.liggghts(env, deck, [], workdir, log="log." + name)
+
+    code, log = run("tiny", 1e-300, "")
+    line = lc.error_line(log) or ""
+    volume = re.search(r"Give at least (\S+) m\^3 per bridge", line)
+    factor = re.search(r"'neigh_modify contact_distance_factor (\S+)'", line)
+    good = (code != 0 and "too small" in line and volume is not None and factor is not None
+            and float(factor.group(1)) > 1.0)
+    print("%-45s %s\n    %s" % ("bridge too small for the reach test",
+                                "ok" if good else "FAIL (exit %d)" % code,
+                                line or "no ERROR line"))
+    if not good:
+        return False
+    ok = True
+    smallest = float(volume.group(1))
+    for name, free, neigh, bridge in [
+            ("tiny_smallest", smallest / 2, "", smallest),
+            ("tiny_factor", 1e-300, "neigh_modify contact_distance_factor " + factor.group(1),
+             2e-300)]:
+        code, log = run(name, free, neigh)
+        rows = lc.thermo_rows(log)
+        held = float(rows[0][1]) if code == 0 and len(rows) == 1 else float("nan")
+        good = abs(held - bridge) <= 1e-12 * bridge
+        ok = ok and good
+        print("%-45s %s\n    %s" % (
+            "  followed: freeLiquid %g, %s" % (free, neigh or "default factor"),
+            "ok" if good else "FAIL (exit %d)" % code,
+            "bridge of %.6g m^3 formed (expected %.6g)" % (held, bridge) if code == 0
+            else lc.error_line(log) or "exit %d" % code))
+    return ok
+
+
 def main():
     parser = lc.argument_parser(__doc__)
     args = parser.parse_args()
@@ -157,6 +221,7 @@ def main():
     ok = ok and good
     print("%-45s %s\n    %s" % ("dry wall (warning, no capillary force)",
                                 "ok" if good else "FAIL", detail))
+    ok = tiny_volume(env, workdir) and ok
     print("bad input: %s (files in %s)" % ("PASS" if ok else "FAIL", workdir))
     return 0 if ok else 1
 

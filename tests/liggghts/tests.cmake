@@ -50,7 +50,17 @@ add_test(NAME liggghts_restart
 add_test(NAME liggghts_restart_mpi
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/restart.py ${CAPBRIDGE_LIGGGHTS_ENV}
                  --ranks 2 --workdir ${_liggghts_work}/restart_mpi)
+# Protocol 2's liquid lost with a second pair_style or with atoms that leave the box, warned
+# with its amount (1 and 2 ranks)
+add_test(NAME liggghts_liquid_account
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/liquid_account.py
+                 ${CAPBRIDGE_LIGGGHTS_ENV} --workdir ${_liggghts_work}/liquid_account)
+# the time-step check against the capillary stiffness (Richefeu's, analytic)
+add_test(NAME liggghts_timestep
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/timestep.py ${CAPBRIDGE_LIGGGHTS_ENV}
+                 --workdir ${_liggghts_work}/timestep)
 set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts_bad_input
                      liggghts_friction liggghts_easo_comparison liggghts_between_runs
-                     liggghts_restart liggghts_restart_mpi
+                     liggghts_restart liggghts_restart_mpi liggghts_liquid_account
+                     liggghts_timestep
                      PROPERTIES LABELS "liggghts" TIMEOUT 600)
