@@ -143,9 +143,7 @@ PairGranCapillary::PairGranCapillary(LAMMPS *lmp) : Pair(lmp)
   single_extra = SV_COUNT;
   svector = new double[SV_COUNT];
 
-  kn = kt = damping = mu = volume = cut_pair = nullptr;
   type_stride = 0;
-  contact_on = law_of = nullptr;
   rad_min = rad_max = nullptr;
   dashpot = CB_DASHPOT_APPROACH;
   dt = update->dt;
@@ -198,14 +196,6 @@ PairGranCapillary::~PairGranCapillary()
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
-    memory->destroy(kn);
-    memory->destroy(kt);
-    memory->destroy(damping);
-    memory->destroy(mu);
-    memory->destroy(volume);
-    memory->destroy(cut_pair);
-    memory->destroy(contact_on);
-    memory->destroy(law_of);
     delete[] rad_min;
     delete[] rad_max;
   }
@@ -229,23 +219,10 @@ void PairGranCapillary::allocate()
   const int n = atom->ntypes;
   memory->create(setflag, n + 1, n + 1, "pair:setflag");
   memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
-  memory->create(kn, n + 1, n + 1, "pair:kn");
-  memory->create(kt, n + 1, n + 1, "pair:kt");
-  memory->create(damping, n + 1, n + 1, "pair:damping");
-  memory->create(mu, n + 1, n + 1, "pair:mu");
-  memory->create(volume, n + 1, n + 1, "pair:volume");
-  memory->create(cut_pair, n + 1, n + 1, "pair:cut_pair");
-  memory->create(contact_on, n + 1, n + 1, "pair:contact_on");
-  memory->create(law_of, n + 1, n + 1, "pair:law_of");
   for (int i = 0; i <= n; i++)
-    for (int j = 0; j <= n; j++) {
-      setflag[i][j] = 0;
-      kn[i][j] = kt[i][j] = damping[i][j] = mu[i][j] = 0.0;
-      volume[i][j] = -1.0;
-      cut_pair[i][j] = 0.0;
-      contact_on[i][j] = 0;
-      law_of[i][j] = -1;
-    }
+    for (int j = 0; j <= n; j++) setflag[i][j] = 0;
+  type_stride = n + 1;
+  type_pairs.assign((size_t) type_stride * type_stride, TypePair());
   rad_min = new double[n + 1];
   rad_max = new double[n + 1];
   for (int i = 0; i <= n; i++) rad_min[i] = rad_max[i] = 0.0;
@@ -325,25 +302,25 @@ void PairGranCapillary::parse_coeff(int ilo, int ihi, int jlo, int jhi, int narg
     return utils::numeric(FLERR, arg[k], false, lmp);
   };
 
-  double kn_one = 0.0, kt_one = 0.0, damping_one = 0.0, mu_one = 0.0;
-  int contact_one = 1;
+  cb_contact_law contact_one{};    // contact none: all zero
+  int contact_on_one = 1;
   int iarg = 0;
   if (narg > 0 && strcmp(arg[0], "contact") == 0) {
     if (narg < 2 || strcmp(arg[1], "none") != 0)
       error->all(FLERR, "{}: 'contact' must be followed by 'none' (no contact force: the "
                  "capillary force only); {}", where, coeff_syntax);
-    contact_one = 0;
+    contact_on_one = 0;
     iarg = 2;
   } else {
-    kn_one = number(0, "kn", "normal stiffness, force/distance");
-    kt_one = number(1, "kt", "tangential stiffness, force/distance");
-    damping_one = number(2, "damping", "normal damping rate alpha_n, 0..1");
-    mu_one = number(3, "mu", "friction coefficient");
-    // the core's rule for the coefficients (the dashpot rule is pair_style's: any one here)
-    cb_contact_law trial;
+    const double kn_one = number(0, "kn", "normal stiffness, force/distance");
+    const double kt_one = number(1, "kt", "tangential stiffness, force/distance");
+    const double damping_one = number(2, "damping", "normal damping rate alpha_n, 0..1");
+    const double mu_one = number(3, "mu", "friction coefficient");
+    // the core's rule for the coefficients (the dashpot rule is pair_style's, applied by
+    // init_one: any one here)
     cb_message msg;
-    if (cb_contact_law_init(&trial, kn_one, kt_one, damping_one, mu_one, CB_DASHPOT_APPROACH,
-                            &msg) != CB_OK)
+    if (cb_contact_law_init(&contact_one, kn_one, kt_one, damping_one, mu_one,
+                            CB_DASHPOT_APPROACH, &msg) != CB_OK)
       error->all(FLERR, "{}: {}", where, msg.text);
     iarg = 4;
   }
@@ -421,13 +398,13 @@ void PairGranCapillary::parse_coeff(int ilo, int ihi, int jlo, int jhi, int narg
   const int n = atom->ntypes;
   for (int i = ilo; i <= ihi; i++)
     for (int j = MAX(jlo, i); j <= jhi; j++) {
-      kn[i][j] = kn_one;
-      kt[i][j] = kt_one;
-      damping[i][j] = damping_one;
-      mu[i][j] = mu_one;
-      contact_on[i][j] = contact_one;
-      volume[i][j] = volume_one;
-      law_of[i][j] = index;
+      TypePair &tp = type_pairs[i * type_stride + j];
+      tp.contact = contact_one;
+      tp.volume = volume_one;
+      tp.law = laws[index];
+      tp.contact_on = contact_on_one;
+      tp.law_index = index;
+      type_pairs[j * type_stride + i] = tp;
       coeff_text[(size_t) i * (n + 1) + j] = text;
       setflag[i][j] = 1;
       count++;
@@ -464,13 +441,13 @@ void PairGranCapillary::init_style()
     for (int j = i; j <= n; j++) {
       if (!setflag[i][j]) continue;
       if (liquid_mode == LIQUID_FIXED) {
-        if (volume[i][j] < 0.0 && !(fix_liquid && fix_liquid->fixed_volume >= 0.0))
+        if (type_pair(i, j).volume < 0.0 && !(fix_liquid && fix_liquid->fixed_volume >= 0.0))
           error->all(FLERR, "pair_coeff {} {}: no bridge volume: give 'volume V' (volume units) or "
                      "define fix capillary/liquid", i, j);
-      } else if (volume[i][j] > 0.0) {
+      } else if (type_pair(i, j).volume > 0.0) {
         error->all(FLERR, "pair_coeff {} {}: volume {} conflicts with fix capillary/liquid "
                    "{}: the liquid comes from the fix (only 'volume 0', a dry type pair, is "
-                   "allowed)", i, j, volume[i][j], fix_liquid->mode_name());
+                   "allowed)", i, j, type_pair(i, j).volume, fix_liquid->mode_name());
       }
     }
   if (liquid_mode != LIQUID_FIXED) {
@@ -479,12 +456,13 @@ void PairGranCapillary::init_style()
     int first = -1;
     for (int i = 1; i <= n; i++)
       for (int j = i; j <= n; j++)
-        if (setflag[i][j] && volume[i][j] != 0.0) {
-          if (first < 0) first = law_of[i][j];
-          else if (law_of[i][j] != first)
+        if (setflag[i][j] && type_pair(i, j).volume != 0.0) {
+          const int index = type_pair(i, j).law_index;
+          if (first < 0) first = index;
+          else if (index != first)
             error->all(FLERR, "fix capillary/liquid {}: every wet type pair must use the same "
                        "law (Protocol 1 distributes over all pairs with one law): '{}' and '{}'",
-                       fix_liquid->mode_name(), law_text[first], law_text[law_of[i][j]]);
+                       fix_liquid->mode_name(), law_text[first], law_text[index]);
         }
   }
 
@@ -497,7 +475,8 @@ void PairGranCapillary::init_style()
   for (int i = 1; i <= n; i++)
     for (int j = i; j <= n; j++)
       if (setflag[i][j] &&
-          (liquid_mode == LIQUID_FIXED ? design_volume(i, j) > 0.0 : volume[i][j] != 0.0))
+          (liquid_mode == LIQUID_FIXED ? design_volume(i, j) > 0.0
+                                        : type_pair(i, j).volume != 0.0))
         bridges_possible = 1;
   create_history();
   held_volumes();
@@ -667,10 +646,10 @@ void PairGranCapillary::radius_ranges()
 
 double PairGranCapillary::design_volume(int itype, int jtype) const
 {
-  if (itype > jtype) std::swap(itype, jtype);
-  if (volume[itype][jtype] == 0.0) return 0.0;
+  const double volume = type_pair(itype, jtype).volume;
+  if (volume == 0.0) return 0.0;
   if (liquid_mode == LIQUID_FIXED) {
-    if (volume[itype][jtype] > 0.0) return volume[itype][jtype];
+    if (volume > 0.0) return volume;
     return fix_liquid ? MAX(fix_liquid->fixed_volume, 0.0) : 0.0;
   }
   return fix_liquid ? fix_liquid->design_volume() : 0.0;
@@ -686,7 +665,7 @@ double PairGranCapillary::design_volume(int itype, int jtype) const
 double PairGranCapillary::max_rupture(int itype, int jtype, double vol) const
 {
   if (!(vol > 0.0)) return 0.0;
-  cb_law extend = *law(MIN(itype, jtype), MAX(itype, jtype));    // shallow: never released
+  cb_law extend = *law(itype, jtype);    // shallow: never released
   extend.validity = CB_VALIDITY_EXTEND;
   double largest = 0.0;
   const int steps = 4;
@@ -744,29 +723,16 @@ double PairGranCapillary::init_one(int i, int j)
                      reach / (1.0 + REACH_MARGIN), ri + rj, cut);
   }
 
-  // mirror the symmetric coefficients
-  kn[j][i] = kn[i][j];
-  kt[j][i] = kt[i][j];
-  damping[j][i] = damping[i][j];
-  mu[j][i] = mu[i][j];
-  volume[j][i] = volume[i][j];
-  contact_on[j][i] = contact_on[i][j];
-  law_of[j][i] = law_of[i][j];
-  cut_pair[i][j] = cut_pair[j][i] = cut;
   // the pair loops' constants (init() calls init_one for every pair before a run)
-  type_stride = atom->ntypes + 1;
-  type_pairs.resize((size_t) type_stride * type_stride);
-  TypePair tp;
+  TypePair &tp = type_pairs[i * type_stride + j];
+  const cb_contact_law given = tp.contact;
   cb_message msg;
-  if (cb_contact_law_init(&tp.contact, kn[i][j], kt[i][j], damping[i][j], mu[i][j], dashpot,
-                          &msg) != CB_OK)
+  if (cb_contact_law_init(&tp.contact, given.normal_stiffness, given.tangential_stiffness,
+                          given.damping_rate, given.friction, dashpot, &msg) != CB_OK)
     error->all(FLERR, "pair gran/capillary: types {} {}: {}", i, j, msg.text);    // (checked by pair_coeff)
   tp.formation_volume = liquid_mode == LIQUID_FIXED ? design_volume(i, j) : 0.0;
-  tp.volume = volume[i][j];
   tp.cutsq = cut * cut;
-  tp.law = law(i, j);
-  tp.contact_on = contact_on[i][j];
-  type_pairs[i * type_stride + j] = type_pairs[j * type_stride + i] = tp;
+  type_pairs[j * type_stride + i] = tp;
   return cut;
 }
 
@@ -832,7 +798,7 @@ void PairGranCapillary::fail_cb(int status, const char *what, int itype, int jty
 {
   error->one(FLERR, "pair gran/capillary: {} failed for types {} {} (law '{}', r1 = {}, "
              "r2 = {}, volume = {}, gap = {}): {}", what, itype, jtype,
-             law_text[law_of[itype][jtype]], r1, r2, vol, gap,
+             law_text[type_pair(itype, jtype).law_index], r1, r2, vol, gap,
              cb_status_message((cb_status) status));
 }
 
@@ -1465,7 +1431,8 @@ void PairGranCapillary::check_timestep()
       }
       const double m = MIN(mass[i], mass[j]);
       const double capillary = capillary_bound[ij];
-      const double contact = contact_on[i][j] ? kn[i][j] : 0.0;
+      const TypePair &tp = type_pair(i, j);
+      const double contact = tp.contact_on ? tp.contact.normal_stiffness : 0.0;
       const double k = MAX(contact, capillary);
       if (!(k > 0.0)) continue;
       const double limit = 0.1 * MY_PI * sqrt(m / k);
@@ -1586,7 +1553,7 @@ double PairGranCapillary::single(int i, int j, int itype, int jtype, double rsq,
   }
 
   double contact = 0.0, tangential = 0.0;
-  if (contact_on[itype][jtype] && gap < 0.0) {
+  if (type_pair(itype, jtype).contact_on && gap < 0.0) {
     double **x = atom->x, **v = atom->v;
     const double delx = x[i][0] - x[j][0];
     const double dely = x[i][1] - x[j][1];
@@ -1696,7 +1663,7 @@ int PairGranCapillary::protocol1(double total_liquid, double &alpha, double &lar
   if (!the_law) {
     for (int i = 1; i <= atom->ntypes && !the_law; i++)
       for (int j = i; j <= atom->ntypes && !the_law; j++)
-        if (setflag[i][j] && volume[i][j] != 0.0) the_law = law(i, j);
+        if (setflag[i][j] && type_pair(i, j).volume != 0.0) the_law = law(i, j);
   }
   if (!the_law)
     error->all(FLERR, "fix capillary/liquid {}: every type pair is dry (pair_coeff volume 0): no "
@@ -1781,7 +1748,8 @@ int PairGranCapillary::protocol1(double total_liquid, double &alpha, double &lar
   // volume the neighbor reach was built for, or pairs beyond the reach would be eligible
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
-      if (!setflag[i][j] || volume[i][j] == 0.0 || rad_max[i] <= 0.0 || rad_max[j] <= 0.0)
+      if (!setflag[i][j] || type_pair(i, j).volume == 0.0 || rad_max[i] <= 0.0 ||
+          rad_max[j] <= 0.0)
         continue;
       const double rg = sqrt(rad_max[i] * rad_max[j]);
       const double largest = alpha * rg * rg * rg;
@@ -1807,7 +1775,7 @@ int PairGranCapillary::protocol1(double total_liquid, double &alpha, double &lar
     check_cb(status, "Protocol 1 redistribution", type[i], type[j], radius[i], radius[j],
              mine[k], gap);
     const int now = bridge->active != 0.0;
-    const int in_contact = contact_on[type[i]][type[j]] && gap < 0.0;
+    const int in_contact = type_pair(type[i], type[j]).contact_on && gap < 0.0;
     firsttouch[i][jj] = (now || in_contact) ? 1 : 0;
     if (!in_contact) history[HIST_SHEAR] = history[HIST_SHEAR + 1] = history[HIST_SHEAR + 2] = 0.0;
     if (counted(i, j)) {

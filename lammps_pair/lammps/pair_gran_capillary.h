@@ -99,24 +99,24 @@ class PairGranCapillary : public Pair {
   }
 
  protected:
-  // per type pair
-  double **kn, **kt, **damping, **mu, **volume, **cut_pair;
-  int **contact_on, **law_of;
   std::vector<std::string> coeff_text;    // the pair_coeff arguments, for restart files
   std::vector<cb_law *> laws;             // prepared laws, shared by type pairs
   std::vector<std::string> law_text;      // the law specification of each law
 
-  // The constants of the pair loops for one type pair, derived in init_one: one cache line
-  // per pair instead of a pointer chase per coefficient.
+  // One type pair: its coefficients (the only copy: pair_coeff writes them) and the constants
+  // the pair loops derive from them (init_one), one record per pair instead of a pointer chase
+  // per coefficient.
   struct TypePair {
-    cb_contact_law contact;        // k_n, k_t, alpha_n, mu and the dashpot rule (the core's)
-    double formation_volume;       // a new bridge's volume in liquid mode fixed (0: none forms)
-    double volume;                 // the pair_coeff volume (0: never a bridge)
-    double cutsq;                  // the neighbor cutoff squared
-    const cb_law *law;
-    int contact_on;
+    cb_contact_law contact{};      // pair_coeff's k_n, k_t, alpha_n, mu; init_one derives the
+                                   // rest under pair_style's dashpot rule (the core's law)
+    double formation_volume = 0.0; // a new bridge's volume in liquid mode fixed (0: none forms)
+    double volume = -1.0;          // the pair_coeff volume (-1: not given, 0: never a bridge)
+    double cutsq = 0.0;            // the neighbor cutoff squared (init_one)
+    const cb_law *law = nullptr;   // its prepared law (nullptr: no pair_coeff)
+    int contact_on = 0;            // 0: pair_coeff contact none
+    int law_index = -1;            // the law's place in laws and law_text
   };
-  std::vector<TypePair> type_pairs;    // [itype * (ntypes + 1) + jtype]
+  std::vector<TypePair> type_pairs;    // [itype * (ntypes + 1) + jtype], both orders
   int type_stride;
   const TypePair &type_pair(int itype, int jtype) const
   {
@@ -164,7 +164,7 @@ class PairGranCapillary : public Pair {
 
   void allocate();
   void grow_scratch();
-  const cb_law *law(int itype, int jtype) const { return laws[law_of[itype][jtype]]; }
+  const cb_law *law(int itype, int jtype) const { return type_pair(itype, jtype).law; }
   int counted(int i, int j) const;
   int wet_pair(int i, int j, const TypePair &tp) const;
   // a core call's status: nothing on CB_OK (inline: it follows every core call of the pair
