@@ -38,6 +38,11 @@ class PairGranCapillary : public Pair {
   // A style whose first run cannot hold a bridge keeps the contact layout, [0..2] alone
   // (SIZE_CONTACT); the first run that can hold one widens it (widen_history).
   enum { HIST_SHEAR = 0, HIST_BRIDGE = 3, SIZE_CONTACT = 3, SIZE_BRIDGE = 3 + CB_BRIDGE_DOUBLES };
+  // the bridge in one pair's history values
+  static cb_bridge *bridge_of(double *history)
+  {
+    return reinterpret_cast<cb_bridge *>(history + HIST_BRIDGE);
+  }
   // the restart settings' format: 2 (0 and 1 were the friction setting of earlier files)
   enum { SETTINGS_FORMAT = 2 };
   // How bridges get their liquid.
@@ -152,6 +157,7 @@ class PairGranCapillary : public Pair {
   double *candidates, *released, *offer, *deposit, *best_height;
   tagint *best_partner;
   int commflag;
+  enum { COMM_REVERSE_SIZE = 4, COMM_FORWARD_SIZE = 3 };    // values an atom, each way
 
   // events since the last census (this rank, pairs counted once)
   double n_formed, n_ruptured, n_reach, pool_released;
@@ -201,6 +207,7 @@ class PairGranCapillary : public Pair {
   void check_timestep();
   void radius_ranges();
   double max_rupture(int itype, int jtype, double vol) const;
+  double pair_cutoff(int itype, int jtype);
   double *find_history(int i, int j, double *negate);
   void parse_coeff(int ilo, int ihi, int jlo, int jhi, int narg, char **arg);
 };
