@@ -7,8 +7,8 @@
 #   lammps_pair/lammps/Install.sh LAMMPS_DIR --remove take them out again
 #
 # LAMMPS_DIR is the top of a LAMMPS source tree (with src/ and cmake/).  Copied:
-#   src/pair_gran_capillary.{h,cpp}, src/capillary_*.cpp,              the binding (the
-#   src/fix_capillary_liquid.{h,cpp}                                    list: $binding below)
+#   src/pair_gran_capillary.{h,cpp}, src/fix_capillary_liquid.{h,cpp},  the binding (the
+#   src/capillary_*.{h,cpp}                                              list: $binding below)
 #   src/CAPBRIDGE_CORE/   the capbridge core: capbridge.h, the C99 sources (src_c/*.c) and
 #                         their internal headers, and capbridge.cmake
 # LAMMPS's CMake build compiles the .cpp files of src/ (and finds the styles in the
@@ -28,8 +28,8 @@ lammps=${1:?"usage: $0 LAMMPS_DIR [--remove]"}
 [ -f "$lammps/src/pair.h" ] && [ -d "$lammps/cmake" ] ||
     { echo "$0: '$lammps' is not a LAMMPS source tree (src/pair.h, cmake/)" >&2; exit 2; }
 binding="pair_gran_capillary.h pair_gran_capillary.cpp capillary_coeff.cpp capillary_history.cpp
-         capillary_checks.cpp capillary_protocols.cpp
-         fix_capillary_liquid.h fix_capillary_liquid.cpp"
+         capillary_checks.cpp capillary_bridges.h capillary_bridges.cpp capillary_liquid_mode.h
+         fix_capillary_liquid.h fix_capillary_liquid.cpp capillary_protocols.cpp"
 
 if [ "${2:-}" = "--remove" ]; then
     for f in $binding; do rm -f "$lammps/src/$f"; done

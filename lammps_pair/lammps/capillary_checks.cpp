@@ -78,7 +78,7 @@ double PairGranCapillary::design_volume(int itype, int jtype) const
     if (volume > 0.0) return volume;
     return fix_liquid ? MAX(fix_liquid->fixed_volume, 0.0) : 0.0;
   }
-  return fix_liquid ? fix_liquid->design_volume() : 0.0;
+  return fix_liquid ? fix_liquid->reach_volume() : 0.0;
 }
 
 /* ----------------------------------------------------------------------

@@ -169,7 +169,7 @@ void PairGranCapillary::derive_bridges()
       // (a corrupted history: CB_ERR_BRIDGE_STATE, which says so; a restart file of a
       // build whose history is laid out otherwise is refused before, by
       // read_restart_settings)
-      check_cb(status, "bridge constants at setup", type[i], type[j], radius[i], radius[j],
+      check_cb(error, status, "bridge constants at setup", type[i], type[j], radius[i], radius[j],
                bridge->volume, 0.0);
     }
   }

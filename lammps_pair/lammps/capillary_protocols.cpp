@@ -1,12 +1,20 @@
 /* ----------------------------------------------------------------------
-   capbridge — LAMMPS binding: the liquid protocols of Richefeu 2007
+   capbridge — LAMMPS binding: the liquid protocols of Richefeu 2007 (fix capillary/liquid)
 
-   Protocols 2 and 3 within a force evaluation (update_bridges, exchange_liquid and their
-   MPI exchange), Protocol 1 over all ranks, and the census of the bridges.
+   Member functions of FixCapillaryLiquid that move liquid into and out of the bridges of
+   pair style gran/capillary, which it reaches through CapillaryBridges (the pair history,
+   the type pairs' laws and cutoffs, the bridge events) and the pair's neighbor list:
+     Protocols 2, 3 within a force evaluation (offer_liquid, called by the pair's compute()
+       before its loop: update_bridges, exchange_liquid and their MPI exchange);
+     Protocol 1 over the pairs of all ranks (protocol1, from distribute());
+     the bridges' census (count_bridges) and the liquid released to Protocol 1's pool.
+   A file of its own: the fix's other file is its command, schedule, output and restart;
+   this one is the per-pair work, which walks the pair's list as the pair's loops do.
 ------------------------------------------------------------------------- */
 
-#include "pair_gran_capillary.h"
 #include "fix_capillary_liquid.h"
+
+#include "capillary_bridges.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -15,6 +23,7 @@
 #include "force.h"
 #include "memory.h"
 #include "neigh_list.h"
+#include "pair.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +33,11 @@
 using namespace LAMMPS_NS;
 
 namespace {
-enum { REVERSE_EVENTS = 1, FORWARD_OFFERS = 2 };
+// the special-bond index of a neighbor entry, as the pair loop reads it (Pair::sbmask)
+int sbmask(int j)
+{
+  return j >> SBBITS & 3;
+}
 
 // Does a contact at `offset` (contact height minus centre height) beat the current
 // receiver?  The rule is cb_protocol3_receiver's (the lowest contact strictly below the
@@ -45,9 +58,17 @@ bool better_receiver(double offset, tagint partner, double best_offset, tagint b
 }
 }    // namespace
 
+// Protocol 1's candidates on this rank: the wet pairs within reach, in list order
+struct FixCapillaryLiquid::Protocol1Pairs {
+  std::vector<double> geometry;              // r1, r2, gap per candidate
+  std::vector<tagint> keys;                  // smaller tag, larger tag
+  std::vector<std::pair<int, int>> where;    // i and its neighbor index jj
+  const cb_law *law = nullptr;
+};
+
 /* ---------------------------------------------------------------------- */
 
-void PairGranCapillary::grow_scratch()
+void FixCapillaryLiquid::grow_scratch()
 {
   if (atom->nmax <= nmax_scratch) return;
   nmax_scratch = atom->nmax;
@@ -57,12 +78,23 @@ void PairGranCapillary::grow_scratch()
   memory->destroy(deposit);
   memory->destroy(best_height);
   memory->destroy(best_partner);
-  memory->create(candidates, nmax_scratch, "pair:candidates");
-  memory->create(released, nmax_scratch, "pair:released");
-  memory->create(offer, nmax_scratch, "pair:offer");
-  memory->create(deposit, nmax_scratch, "pair:deposit");
-  memory->create(best_height, nmax_scratch, "pair:best_height");
-  memory->create(best_partner, nmax_scratch, "pair:best_partner");
+  memory->create(candidates, nmax_scratch, "capillary/liquid:candidates");
+  memory->create(released, nmax_scratch, "capillary/liquid:released");
+  memory->create(offer, nmax_scratch, "capillary/liquid:offer");
+  memory->create(deposit, nmax_scratch, "capillary/liquid:deposit");
+  memory->create(best_height, nmax_scratch, "capillary/liquid:best_height");
+  memory->create(best_partner, nmax_scratch, "capillary/liquid:best_partner");
+}
+
+/* ----------------------------------------------------------------------
+   Protocols 2, 3, phase 1 (the pair's compute(), before its loop): phase 2, the pair loop,
+   forms new bridges with offer[] and hands Protocol 3's deposit[] to best_partner[]
+------------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::offer_liquid()
+{
+  update_bridges();
+  exchange_liquid();
 }
 
 /* ----------------------------------------------------------------------
@@ -78,7 +110,7 @@ void PairGranCapillary::grow_scratch()
    with a ghost partner is seen by both owners: each records its own atom only.
 ------------------------------------------------------------------------- */
 
-void PairGranCapillary::update_bridges()
+void FixCapillaryLiquid::update_bridges()
 {
   grow_scratch();
   const int nall = atom->nlocal + atom->nghost;
@@ -91,22 +123,22 @@ void PairGranCapillary::update_bridges()
   double **x = atom->x;
   double *radius = atom->radius;
   int *type = atom->type;
-  tagint *tag = atom->tag;
+  int *mask = atom->mask;
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
-  const int protocol3 = liquid_mode == LIQUID_PROTOCOL3;
+  const int protocol3 = mode == LIQUID_PROTOCOL3;
 
+  NeighList *list = pair->list;
   const int inum = list->inum;
   int *ilist = list->ilist;
   int *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
-  int **firsttouch = fix_history->firstflag;
-  double **firstvalue = fix_history->firstvalue;
+  int **firsttouch = bridges->fix_history->firstflag;
+  double **firstvalue = bridges->fix_history->firstvalue;
   double *special = force->special_lj;
 
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
-    const int itype = type[i];
     int *jlist = firstneigh[i];
     int *touch = firsttouch[i];
     double *allhistory = firstvalue[i];
@@ -119,61 +151,84 @@ void PairGranCapillary::update_bridges()
       const double delz = x[i][2] - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
       const double radsum = radius[i] + radius[j];
-      // apart and flagged 0 (no bridge: see pair_force): neither a bridge to advance nor a
-      // candidate (bridges form at contact)
+      // apart and flagged 0 (no bridge: see the pair's pair_force): neither a bridge to
+      // advance nor a candidate (bridges form at contact)
       if (touch[jj] == 0 && cb_certainly_apart(rsq, radsum)) continue;
-      const int jtype = type[j];
-      double *history = &allhistory[SIZE_BRIDGE * jj];
-      cb_bridge *bridge = bridge_of(history);
+      cb_bridge *bridge =
+          CapillaryBridges::bridge_of(&allhistory[CapillaryBridges::SIZE_BRIDGE * jj]);
       const double r = sqrt(rsq);
       const double gap = r - radsum;
 
+      if (bridge->active != 0.0) advance_and_release(i, j, rsq, gap, bridge);
       if (bridge->active != 0.0) {
-        double vol = 0.0;
-        cb_transition transition;
-        int status = cb_bridge_update(type_pair(itype, jtype).law, radius[i], radius[j], gap, 0.0,
-                                      bridge, &transition, &vol);
-        check_cb(status, "bridge update", itype, jtype, radius[i], radius[j],
-                 bridge->volume, gap);
-        if (transition != CB_BRIDGE_RUPTURED) {
-          vol = 0.0;
-          if (rsq >= type_pair(itype, jtype).cutsq) {
-            // held beyond the reach (a volume above the one the reach was built for):
-            // ruptured here, before the pair leaves the neighbor list with its liquid
-            vol = bridge->volume;
-            *bridge = cb_bridge{};
-            if (counted(i, j)) n_reach += 1.0;
-          }
-        }
-        if (vol > 0.0) {
-          if (counted(i, j)) n_ruptured += 1.0;
-          double share_i = 0.0, share_j = 0.0;
-          int status = cb_protocol2_release(vol, radius[i], radius[j], &share_i, &share_j);
-          check_cb(status, "liquid release", itype, jtype, radius[i], radius[j], vol, gap);
-          released[i] += share_i;
-          if (newton_pair || j < nlocal) released[j] += share_j;
-        }
-      }
-      if (bridge->active != 0.0) {
-        if (protocol3) {
-          // contact point on sphere a: centre + r_a (partner - centre) / r
-          const double offset_i = -radius[i] * delz / r;
-          if (better_receiver(offset_i, tag[j], best_height[i], best_partner[i])) {
-            best_height[i] = offset_i;
-            best_partner[i] = tag[j];
-          }
-          if (newton_pair || j < nlocal) {
-            const double offset_j = radius[j] * delz / r;
-            if (better_receiver(offset_j, tag[i], best_height[j], best_partner[j])) {
-              best_height[j] = offset_j;
-              best_partner[j] = tag[i];
-            }
-          }
-        }
-      } else if (gap <= 0.0 && wet_pair(i, j, type_pair(itype, jtype))) {
+        if (protocol3) receive_at(i, j, delz, r);
+      } else if (gap <= 0.0 && CapillaryBridges::wet(bridges->type_pair(type[i], type[j]), mask,
+                                                     groupbit, i, j)) {
         candidates[i] += 1.0;
         if (newton_pair || j < nlocal) candidates[j] += 1.0;
       }
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   phase 1, a bridge: held or ruptured at this gap (or at the reach); a ruptured bridge's
+   liquid is split between the two atoms (released[])
+------------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::advance_and_release(int i, int j, double rsq, double gap,
+                                             cb_bridge *bridge)
+{
+  double *radius = atom->radius;
+  const int itype = atom->type[i], jtype = atom->type[j];
+  const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
+  const CapillaryBridges::TypePair &tp = bridges->type_pair(itype, jtype);
+  const int counted = CapillaryBridges::counted_once(i, j, nlocal, newton_pair, atom->tag);
+  double vol = 0.0;
+  cb_transition transition;
+  int status = cb_bridge_update(tp.law, radius[i], radius[j], gap, 0.0, bridge, &transition, &vol);
+  bridges->check_cb(error, status, "bridge update", itype, jtype, radius[i], radius[j],
+                    bridge->volume, gap);
+  if (transition != CB_BRIDGE_RUPTURED) {
+    vol = 0.0;
+    if (rsq >= tp.cutsq) {
+      // held beyond the reach (a volume above the one the reach was built for):
+      // ruptured here, before the pair leaves the neighbor list with its liquid
+      vol = bridge->volume;
+      *bridge = cb_bridge{};
+      if (counted) bridges->n_reach += 1.0;
+    }
+  }
+  if (vol > 0.0) {
+    if (counted) bridges->n_ruptured += 1.0;
+    double share_i = 0.0, share_j = 0.0;
+    status = cb_protocol2_release(vol, radius[i], radius[j], &share_i, &share_j);
+    bridges->check_cb(error, status, "liquid release", itype, jtype, radius[i], radius[j], vol,
+                      gap);
+    released[i] += share_i;
+    if (newton_pair || j < nlocal) released[j] += share_j;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   phase 1, Protocol 3: the bridge of i and j as the receiver of each atom's share
+------------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::receive_at(int i, int j, double delz, double r)
+{
+  double *radius = atom->radius;
+  tagint *tag = atom->tag;
+  // contact point on sphere a: centre + r_a (partner - centre) / r
+  const double offset_i = -radius[i] * delz / r;
+  if (better_receiver(offset_i, tag[j], best_height[i], best_partner[i])) {
+    best_height[i] = offset_i;
+    best_partner[i] = tag[j];
+  }
+  if (force->newton_pair || j < atom->nlocal) {
+    const double offset_j = radius[j] * delz / r;
+    if (better_receiver(offset_j, tag[i], best_height[j], best_partner[j])) {
+      best_height[j] = offset_j;
+      best_partner[j] = tag[i];
     }
   }
 }
@@ -198,14 +253,10 @@ void PairGranCapillary::update_bridges()
    liquid up to one rounding of the division.
 ------------------------------------------------------------------------- */
 
-void PairGranCapillary::exchange_liquid()
+void FixCapillaryLiquid::exchange_liquid()
 {
-  if (force->newton_pair) {
-    commflag = REVERSE_EVENTS;
-    comm->reverse_comm(this);
-  }
-  double *free_liquid = fix_liquid->free_liquid;
-  const int protocol3 = liquid_mode == LIQUID_PROTOCOL3;
+  if (force->newton_pair) comm->reverse_comm(this);
+  const int protocol3 = mode == LIQUID_PROTOCOL3;
   for (int a = 0; a < atom->nlocal; a++) {
     if (released[a] > 0.0) {
       if (protocol3 && best_partner[a] != 0)
@@ -219,13 +270,15 @@ void PairGranCapillary::exchange_liquid()
     } else
       offer[a] = 0.0;
   }
-  commflag = FORWARD_OFFERS;
   comm->forward_comm(this);
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   the two exchanges of exchange_liquid: reverse, the ghosts' records to their owners
+   (COMM_REVERSE_SIZE values an atom); forward, the owners' offers (COMM_FORWARD_SIZE)
+------------------------------------------------------------------------- */
 
-int PairGranCapillary::pack_reverse_comm(int n, int first, double *buf)
+int FixCapillaryLiquid::pack_reverse_comm(int n, int first, double *buf)
 {
   int m = 0;
   for (int a = first; a < first + n; a++) {
@@ -237,7 +290,7 @@ int PairGranCapillary::pack_reverse_comm(int n, int first, double *buf)
   return m;
 }
 
-void PairGranCapillary::unpack_reverse_comm(int n, int *list_, double *buf)
+void FixCapillaryLiquid::unpack_reverse_comm(int n, int *list_, double *buf)
 {
   int m = 0;
   for (int k = 0; k < n; k++) {
@@ -253,8 +306,8 @@ void PairGranCapillary::unpack_reverse_comm(int n, int *list_, double *buf)
   }
 }
 
-int PairGranCapillary::pack_forward_comm(int n, int *list_, double *buf, int /*pbc_flag*/,
-                                         int * /*pbc*/)
+int FixCapillaryLiquid::pack_forward_comm(int n, int *list_, double *buf, int /*pbc_flag*/,
+                                          int * /*pbc*/)
 {
   int m = 0;
   for (int k = 0; k < n; k++) {
@@ -266,7 +319,7 @@ int PairGranCapillary::pack_forward_comm(int n, int *list_, double *buf, int /*p
   return m;
 }
 
-void PairGranCapillary::unpack_forward_comm(int n, int first, double *buf)
+void FixCapillaryLiquid::unpack_forward_comm(int n, int first, double *buf)
 {
   int m = 0;
   for (int a = first; a < first + n; a++) {
@@ -277,32 +330,57 @@ void PairGranCapillary::unpack_forward_comm(int n, int first, double *buf)
 }
 
 /* ----------------------------------------------------------------------
-   census for fix capillary/liquid (this rank; see the header)
+   this rank's census of the pair history, each pair counted once over all ranks:
+   out[0] bridges, out[1] liquid in bridges, out[2] formations, out[3] ruptures, out[4]
+   ruptures forced at the neighbor reach, out[5] liquid released to the pool (Protocol 1);
+   the events and the released liquid are reset
 ------------------------------------------------------------------------- */
 
-void PairGranCapillary::census(double *out)
+void FixCapillaryLiquid::count_bridges(double *out)
 {
-  double bridges = 0.0, liquid = 0.0;
-  if (history_size == SIZE_BRIDGE && fix_history && list && fix_history->firstvalue) {
+  double count = 0.0, liquid = 0.0;
+  NeighList *list = pair->list;
+  FixNeighHistory *history = bridges->fix_history;
+  if (bridges->history_size == CapillaryBridges::SIZE_BRIDGE && history && list &&
+      history->firstvalue) {
     for (int ii = 0; ii < list->inum; ii++) {
       const int i = list->ilist[ii];
-      double *allhistory = fix_history->firstvalue[i];
+      double *allhistory = history->firstvalue[i];
       for (int jj = 0; jj < list->numneigh[i]; jj++) {
         const int j = list->firstneigh[i][jj] & NEIGHMASK;
-        cb_bridge *bridge = bridge_of(&allhistory[SIZE_BRIDGE * jj]);
-        if (bridge->active == 0.0 || !counted(i, j)) continue;
-        bridges += 1.0;
+        cb_bridge *bridge =
+            CapillaryBridges::bridge_of(&allhistory[CapillaryBridges::SIZE_BRIDGE * jj]);
+        if (bridge->active == 0.0 ||
+            !CapillaryBridges::counted_once(i, j, atom->nlocal, force->newton_pair, atom->tag))
+          continue;
+        count += 1.0;
         liquid += bridge->volume;
       }
     }
   }
-  out[0] = bridges;
+  out[0] = count;
   out[1] = liquid;
-  out[2] = n_formed;
-  out[3] = n_ruptured;
-  out[4] = n_reach;
-  out[5] = pool_released;
-  n_formed = n_ruptured = n_reach = pool_released = 0.0;
+  out[2] = bridges->n_formed;
+  out[3] = bridges->n_ruptured;
+  out[4] = bridges->n_reach;
+  out[5] = bridges->pool_released;
+  bridges->n_formed = bridges->n_ruptured = bridges->n_reach = bridges->pool_released = 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   the liquid of broken bridges released on all ranks since the last call, into the pool
+   (collective)
+------------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::collect_released()
+{
+  double local = 0.0, all = 0.0;
+  if (bridges) {
+    local = bridges->pool_released;
+    bridges->pool_released = 0.0;
+  }
+  MPI_Allreduce(&local, &all, 1, MPI_DOUBLE, MPI_SUM, world);
+  pool += all;
 }
 
 /* ----------------------------------------------------------------------
@@ -312,51 +390,78 @@ void PairGranCapillary::census(double *out)
    with a ghost partner is sent by both owners), handed to cb_protocol1_distribute in
    that order — so the result does not depend on the number of ranks — and the volumes
    are scattered back (MPI_Scatterv); each rank writes them into its pair histories.
+   Returns 0 on success (alpha and the largest bridge volume set), 1 when no pair can
+   hold the liquid (nothing changed).
 ------------------------------------------------------------------------- */
 
-int PairGranCapillary::protocol1(double total_liquid, double &alpha, double &largest_volume)
+int FixCapillaryLiquid::protocol1(double total, double &a, double &largest_volume)
+{
+  Protocol1Pairs mine;
+  gather_candidates(mine);
+  std::vector<double> volumes(mine.where.size());
+  double result[2] = {0.0, 0.0};    // alpha, the largest volume
+  if (distribute_over_ranks(mine, total, volumes, result)) return 1;
+  a = result[0];
+  largest_volume = result[1];
+  check_alpha(a);
+  apply_volumes(mine, volumes);
+  bridges->pool_released = 0.0;
+  return 0;
+}
+
+/* ----------------------------------------------------------------------
+   Protocol 1, step 1: this rank's wet pairs within reach, and the law of the wet type
+   pairs (one law: checked by the pair's init_style)
+------------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::gather_candidates(Protocol1Pairs &mine)
 {
   double **x = atom->x;
   double *radius = atom->radius;
   int *type = atom->type;
   tagint *tag = atom->tag;
-
-  std::vector<double> geometry;    // r1, r2, gap per candidate
-  std::vector<tagint> keys;        // smaller tag, larger tag
-  std::vector<std::pair<int, int>> where;
-  const cb_law *the_law = nullptr;
+  NeighList *list = pair->list;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = list->firstneigh[i][jj] & NEIGHMASK;
-      const int itype = type[i], jtype = type[j];
-      if (!wet_pair(i, j, type_pair(itype, jtype))) continue;
+      const CapillaryBridges::TypePair &tp = bridges->type_pair(type[i], type[j]);
+      if (!CapillaryBridges::wet(tp, atom->mask, groupbit, i, j)) continue;
       const double delx = x[i][0] - x[j][0];
       const double dely = x[i][1] - x[j][1];
       const double delz = x[i][2] - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
-      if (rsq >= cutsq[itype][jtype]) continue;
-      the_law = law(itype, jtype);
-      geometry.push_back(radius[i]);
-      geometry.push_back(radius[j]);
-      geometry.push_back(sqrt(rsq) - (radius[i] + radius[j]));
-      keys.push_back(MIN(tag[i], tag[j]));
-      keys.push_back(MAX(tag[i], tag[j]));
-      where.emplace_back(i, jj);
+      if (rsq >= tp.cutsq) continue;
+      mine.law = tp.law;
+      mine.geometry.push_back(radius[i]);
+      mine.geometry.push_back(radius[j]);
+      mine.geometry.push_back(sqrt(rsq) - (radius[i] + radius[j]));
+      mine.keys.push_back(MIN(tag[i], tag[j]));
+      mine.keys.push_back(MAX(tag[i], tag[j]));
+      mine.where.emplace_back(i, jj);
     }
   }
-  // the law of the wet type pairs (one law: checked in init_style)
-  if (!the_law) {
-    for (int i = 1; i <= atom->ntypes && !the_law; i++)
-      for (int j = i; j <= atom->ntypes && !the_law; j++)
-        if (setflag[i][j] && type_pair(i, j).volume != 0.0) the_law = law(i, j);
+  if (!mine.law) {
+    for (int i = 1; i <= atom->ntypes && !mine.law; i++)
+      for (int j = i; j <= atom->ntypes && !mine.law; j++)
+        if (bridges->wet_type_pair(i, j)) mine.law = bridges->type_pair(i, j).law;
   }
-  if (!the_law)
+  if (!mine.law)
     error->all(FLERR, "fix capillary/liquid {}: every type pair is dry (pair_coeff volume 0): no "
-               "pair can hold the liquid", fix_liquid->mode_name());
+               "pair can hold the liquid", mode_name());
+}
 
+/* ----------------------------------------------------------------------
+   Protocol 1, step 2: every rank's candidates to rank 0, distributed there, the volumes
+   back (volumes[k] for this rank's candidate k; result: alpha, the largest volume).
+   Returns 1 when no pair can hold the liquid.
+------------------------------------------------------------------------- */
+
+int FixCapillaryLiquid::distribute_over_ranks(const Protocol1Pairs &mine, double total,
+                                              std::vector<double> &volumes, double *result)
+{
   const int nprocs = comm->nprocs, me = comm->me;
-  int nmine = (int) where.size();
+  int nmine = (int) mine.where.size();
   std::vector<int> counts(nprocs), displs(nprocs), counts3(nprocs), displs3(nprocs),
       counts2(nprocs), displs2(nprocs);
   MPI_Gather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
@@ -376,99 +481,127 @@ int PairGranCapillary::protocol1(double total_liquid, double &alpha, double &lar
   std::vector<double> all_geometry(me == 0 ? 3 * ntotal : 0);
   std::vector<tagint> all_keys(me == 0 ? 2 * ntotal : 0);
   std::vector<double> all_volumes(me == 0 ? ntotal : 0);
-  MPI_Gatherv(geometry.data(), 3 * nmine, MPI_DOUBLE, all_geometry.data(), counts3.data(),
+  MPI_Gatherv(mine.geometry.data(), 3 * nmine, MPI_DOUBLE, all_geometry.data(), counts3.data(),
               displs3.data(), MPI_DOUBLE, 0, world);
-  MPI_Gatherv(keys.data(), 2 * nmine, MPI_LMP_TAGINT, all_keys.data(), counts2.data(),
+  MPI_Gatherv(mine.keys.data(), 2 * nmine, MPI_LMP_TAGINT, all_keys.data(), counts2.data(),
               displs2.data(), MPI_LMP_TAGINT, 0, world);
 
   int status = CB_OK;
-  double result[2] = {0.0, 0.0};
-  if (me == 0) {
-    std::vector<bigint> order(ntotal);
-    for (bigint k = 0; k < ntotal; k++) order[k] = k;
-    std::sort(order.begin(), order.end(), [&](bigint a, bigint b) {
-      if (all_keys[2 * a] != all_keys[2 * b]) return all_keys[2 * a] < all_keys[2 * b];
-      if (all_keys[2 * a + 1] != all_keys[2 * b + 1])
-        return all_keys[2 * a + 1] < all_keys[2 * b + 1];
-      return a < b;
-    });
-    std::vector<double> r1, r2, gap;
-    std::vector<bigint> unique_of(ntotal);
-    for (bigint k = 0; k < ntotal; k++) {
-      const bigint e = order[k];
-      const bool same = k > 0 && all_keys[2 * e] == all_keys[2 * order[k - 1]] &&
-          all_keys[2 * e + 1] == all_keys[2 * order[k - 1] + 1];
-      if (!same) {
-        r1.push_back(all_geometry[3 * e]);
-        r2.push_back(all_geometry[3 * e + 1]);
-        gap.push_back(all_geometry[3 * e + 2]);
-      }
-      unique_of[e] = (bigint) r1.size() - 1;
-    }
-    const size_t nu = r1.size();
-    std::vector<double> threshold(nu), weight(nu), vol(nu);
-    std::vector<size_t> sorted(nu);
-    cb_protocol1_work work = {threshold.data(), weight.data(), sorted.data()};
-    status = cb_protocol1_distribute(the_law, nu, r1.data(), r2.data(), gap.data(), total_liquid,
-                                     work, vol.data(), &result[0]);
-    if (status == CB_OK) {
-      for (bigint e = 0; e < ntotal; e++) all_volumes[e] = vol[unique_of[e]];
-      for (size_t k = 0; k < nu; k++) result[1] = MAX(result[1], vol[k]);
-    }
-  }
+  if (me == 0)
+    status = distribute_on_root(mine.law, all_geometry, all_keys, total, all_volumes, result);
   MPI_Bcast(&status, 1, MPI_INT, 0, world);
   MPI_Bcast(result, 2, MPI_DOUBLE, 0, world);
   if (status == CB_ERR_LIQUID) return 1;
   if (status != CB_OK)
     error->all(FLERR, "fix capillary/liquid: Protocol 1 (cb_protocol1_distribute) failed: {}",
                cb_status_message((cb_status) status));
+  MPI_Scatterv(all_volumes.data(), counts.data(), displs.data(), MPI_DOUBLE, volumes.data(),
+               nmine, MPI_DOUBLE, 0, world);
+  return 0;
+}
 
-  std::vector<double> mine(nmine);
-  MPI_Scatterv(all_volumes.data(), counts.data(), displs.data(), MPI_DOUBLE, mine.data(), nmine,
-               MPI_DOUBLE, 0, world);
+/* ----------------------------------------------------------------------
+   Protocol 1 on rank 0: the pairs of all ranks sorted by their tags, each pair once (so
+   that the result does not depend on the number of ranks), distributed by the core;
+   volumes[e] for every entry e as gathered.  Returns the core's status.
+------------------------------------------------------------------------- */
 
-  alpha = result[0];
-  largest_volume = result[1];
+int FixCapillaryLiquid::distribute_on_root(const cb_law *law, const std::vector<double> &geometry,
+                                           const std::vector<tagint> &keys, double total,
+                                           std::vector<double> &volumes, double *result)
+{
+  const bigint ntotal = (bigint) volumes.size();
+  std::vector<bigint> order(ntotal);
+  for (bigint k = 0; k < ntotal; k++) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](bigint a, bigint b) {
+    if (keys[2 * a] != keys[2 * b]) return keys[2 * a] < keys[2 * b];
+    if (keys[2 * a + 1] != keys[2 * b + 1]) return keys[2 * a + 1] < keys[2 * b + 1];
+    return a < b;
+  });
+  std::vector<double> r1, r2, gap;
+  std::vector<bigint> unique_of(ntotal);
+  for (bigint k = 0; k < ntotal; k++) {
+    const bigint e = order[k];
+    const bool same = k > 0 && keys[2 * e] == keys[2 * order[k - 1]] &&
+        keys[2 * e + 1] == keys[2 * order[k - 1] + 1];
+    if (!same) {
+      r1.push_back(geometry[3 * e]);
+      r2.push_back(geometry[3 * e + 1]);
+      gap.push_back(geometry[3 * e + 2]);
+    }
+    unique_of[e] = (bigint) r1.size() - 1;
+  }
+  const size_t nu = r1.size();
+  std::vector<double> threshold(nu), weight(nu), vol(nu);
+  std::vector<size_t> sorted(nu);
+  cb_protocol1_work work = {threshold.data(), weight.data(), sorted.data()};
+  const int status = cb_protocol1_distribute(law, nu, r1.data(), r2.data(), gap.data(), total,
+                                             work, vol.data(), &result[0]);
+  if (status == CB_OK) {
+    for (bigint e = 0; e < ntotal; e++) volumes[e] = vol[unique_of[e]];
+    for (size_t k = 0; k < nu; k++) result[1] = MAX(result[1], vol[k]);
+  }
+  return status;
+}
 
-  // the bridges between the largest spheres of a wet type pair must stay within the
-  // volume the neighbor reach was built for, or pairs beyond the reach would be eligible
+/* ----------------------------------------------------------------------
+   Protocol 1, step 3: the bridges between the largest spheres of a wet type pair must
+   stay within the volume the neighbor reach was built for, or pairs beyond the reach
+   would be eligible
+------------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::check_alpha(double a)
+{
+  const double *rad_max = bridges->rad_max;
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
-      if (!setflag[i][j] || type_pair(i, j).volume == 0.0 || rad_max[i] <= 0.0 ||
-          rad_max[j] <= 0.0)
-        continue;
+      if (!bridges->wet_type_pair(i, j) || rad_max[i] <= 0.0 || rad_max[j] <= 0.0) continue;
       const double rg = sqrt(rad_max[i] * rad_max[j]);
-      const double largest = alpha * rg * rg * rg;
-      const double design = design_volume(i, j);
+      const double largest = a * rg * rg * rg;
+      const double design = reach_volume();
       if (largest > design * (1.0 + 1e-12))
         error->all(FLERR, "fix capillary/liquid: Protocol 1 gives alpha = {:.6g}: a bridge between "
                    "the largest spheres of types {} {} would hold {:.6g}, more than vmax = "
                    "{:.6g} that the neighbor reach was built for; raise vmax",
-                   alpha, i, j, largest, design);
+                   a, i, j, largest, design);
     }
+}
 
-  int **firsttouch = fix_history->firstflag;
-  double **firstvalue = fix_history->firstvalue;
-  for (int k = 0; k < nmine; k++) {
-    const int i = where[k].first, jj = where[k].second;
+/* ----------------------------------------------------------------------
+   Protocol 1, step 4: the volumes into this rank's pair histories; the history flag and
+   the shear of a pair neither bridged nor touching cleared, as the pair loop keeps them
+------------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::apply_volumes(const Protocol1Pairs &mine,
+                                       const std::vector<double> &volumes)
+{
+  double *radius = atom->radius;
+  int *type = atom->type;
+  NeighList *list = pair->list;
+  int **firsttouch = bridges->fix_history->firstflag;
+  double **firstvalue = bridges->fix_history->firstvalue;
+  for (size_t k = 0; k < mine.where.size(); k++) {
+    const int i = mine.where[k].first, jj = mine.where[k].second;
     const int j = list->firstneigh[i][jj] & NEIGHMASK;
-    double *history = &firstvalue[i][SIZE_BRIDGE * jj];    // wet pairs: the bridge layout
-    cb_bridge *bridge = bridge_of(history);
+    // wet pairs: the bridge layout
+    double *history = &firstvalue[i][CapillaryBridges::SIZE_BRIDGE * jj];
+    cb_bridge *bridge = CapillaryBridges::bridge_of(history);
+    const CapillaryBridges::TypePair &tp = bridges->type_pair(type[i], type[j]);
     const int was = bridge->active != 0.0;
-    const double gap = geometry[3 * k + 2];
-    int status = cb_bridge_set_volume(law(type[i], type[j]), radius[i], radius[j], mine[k],
-                                      bridge);
-    check_cb(status, "Protocol 1 redistribution", type[i], type[j], radius[i], radius[j],
-             mine[k], gap);
+    const double gap = mine.geometry[3 * k + 2];
+    int status = cb_bridge_set_volume(tp.law, radius[i], radius[j], volumes[k], bridge);
+    bridges->check_cb(error, status, "Protocol 1 redistribution", type[i], type[j], radius[i],
+                      radius[j], volumes[k], gap);
     const int now = bridge->active != 0.0;
-    const int in_contact = type_pair(type[i], type[j]).contact_on && gap < 0.0;
+    const int in_contact = tp.contact_on && gap < 0.0;
     firsttouch[i][jj] = (now || in_contact) ? 1 : 0;
-    if (!in_contact) history[HIST_SHEAR] = history[HIST_SHEAR + 1] = history[HIST_SHEAR + 2] = 0.0;
-    if (counted(i, j)) {
-      if (now && !was) n_formed += 1.0;
-      if (was && !now) n_ruptured += 1.0;
+    if (!in_contact) {
+      const int shear = CapillaryBridges::HIST_SHEAR;
+      history[shear] = history[shear + 1] = history[shear + 2] = 0.0;
+    }
+    if (CapillaryBridges::counted_once(i, j, atom->nlocal, force->newton_pair, atom->tag)) {
+      if (now && !was) bridges->n_formed += 1.0;
+      if (was && !now) bridges->n_ruptured += 1.0;
     }
   }
-  pool_released = 0.0;
-  return 0;
 }

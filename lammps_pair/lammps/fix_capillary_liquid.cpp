@@ -6,23 +6,26 @@
                                  [every N] [start bridges|free] [vmax V]
 
    The fix owns the liquid; pair style gran/capillary owns the bridges (in its pair
-   history) and does the per-step liquid exchange of Protocols 2 and 3 (see the comments
-   of PairGranCapillary::update_bridges and ::exchange_liquid).  This fix
+   history), which the fix reaches through CapillaryBridges (capillary_bridges.h).  This
+   file: the command, the totals, the schedule, the output and the restart state; the
+   protocols' work on the pairs is in capillary_protocols.cpp.  This fix
      - fixes the total liquid at the first run (W times the mass of the group over RHO,
        or V), and the bridge volume the neighbor reach is built for (vmax);
      - holds the per-atom free liquid of Protocols 2 and 3 (migrates with the atoms,
        written to restart files; allocated only for these protocols);
-     - runs Protocol 1 (PairGranCapillary::protocol1) at the start and every N steps
+     - runs Protocol 1 (protocol1) at the start and every N steps
        (every re-neighboring for N = 0), and, for Protocols 2 and 3, once at the start
        (start bridges) or hands the liquid to the atoms in proportion to their mass
        (start free);
+     - does the per-step liquid exchange of Protocols 2 and 3 (offer_liquid, called by the
+       pair's compute());
      - holds the Protocol 1 pool: liquid of broken bridges until the next distribution;
      - reports the census as a global vector.
 ------------------------------------------------------------------------- */
 
 #include "fix_capillary_liquid.h"
 
-#include "pair_gran_capillary.h"
+#include "capillary_bridges.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -31,6 +34,7 @@
 #include "group.h"
 #include "memory.h"
 #include "neighbor.h"
+#include "pair.h"
 #include "update.h"
 
 #include <algorithm>
@@ -42,21 +46,22 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 namespace {
-const char *const mode_names[] = {"fixed", "protocol1", "protocol2", "protocol3"};
 constexpr int N_RESTART = 8;
 }    // namespace
 
 /* ---------------------------------------------------------------------- */
 
 FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), free_liquid(nullptr), pair(nullptr)
+    Fix(lmp, narg, arg), offer(nullptr), deposit(nullptr), best_partner(nullptr), pair(nullptr),
+    bridges(nullptr), free_liquid(nullptr), nmax_scratch(0), candidates(nullptr),
+    released(nullptr), best_height(nullptr)
 {
   if (narg < 4)
     error->all(FLERR, "fix capillary/liquid: missing mode: allowed fixed, protocol1, protocol2, "
                "protocol3");
   mode = -1;
-  for (int m = 0; m < 4; m++)
-    if (strcmp(arg[3], mode_names[m]) == 0) mode = m;
+  for (int m = 0; m < LIQUID_MODES; m++)
+    if (strcmp(arg[3], capillary_liquid_mode_name(m)) == 0) mode = m;
   if (mode < 0)
     error->all(FLERR, "fix capillary/liquid: unknown mode '{}': allowed fixed, protocol1, "
                "protocol2, protocol3", arg[3]);
@@ -70,7 +75,7 @@ FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
   const bool is_keyword =
       iarg < narg && std::any_of(std::begin(keywords), std::end(keywords),
                                  [&](const char *k) { return strcmp(arg[iarg], k) == 0; });
-  if (mode == PairGranCapillary::LIQUID_FIXED && iarg < narg && !is_keyword) {
+  if (mode == LIQUID_FIXED && iarg < narg && !is_keyword) {
     if (!utils::is_double(arg[iarg]))
       error->all(FLERR, "fix capillary/liquid fixed: volume '{}' is not a number (the bridge "
                  "volume, >= 0, in volume units; or leave it out to use pair_coeff's)",
@@ -81,7 +86,7 @@ FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
                  arg[iarg]);
     iarg++;
   }
-  const bool protocol = mode != PairGranCapillary::LIQUID_FIXED;
+  const bool protocol = mode != LIQUID_FIXED;
   auto need = [&](int count, const char *keyword) {
     if (iarg + count >= narg)
       error->all(FLERR, "fix capillary/liquid: keyword '{}' needs {} value{}", keyword, count,
@@ -116,7 +121,7 @@ FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
                    ">= 0 (volume units)", arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(key, "every") == 0) {
-      if (mode != PairGranCapillary::LIQUID_PROTOCOL1)
+      if (mode != LIQUID_PROTOCOL1)
         error->all(FLERR, "fix capillary/liquid: keyword 'every' applies to protocol1 only");
       need(1, key);
       every = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
@@ -125,7 +130,7 @@ FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
                    "re-neighboring)", every);
       iarg += 2;
     } else if (strcmp(key, "start") == 0) {
-      if (mode != PairGranCapillary::LIQUID_PROTOCOL2 && mode != PairGranCapillary::LIQUID_PROTOCOL3)
+      if (mode != LIQUID_PROTOCOL2 && mode != LIQUID_PROTOCOL3)
         error->all(FLERR, "fix capillary/liquid: keyword 'start' applies to protocol2 and "
                    "protocol3 only");
       need(1, key);
@@ -160,7 +165,10 @@ FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
   extlist = new int[8]{1, 0, 1, 1, 1, 1, 1, 0};
   restart_global = 1;
 
-  if (mode == PairGranCapillary::LIQUID_PROTOCOL2 || mode == PairGranCapillary::LIQUID_PROTOCOL3) {
+  if (capillary_liquid_per_atom(mode)) {
+    // the per-atom liquid exchange within a force evaluation (exchange_liquid)
+    comm_forward = COMM_FORWARD_SIZE;
+    comm_reverse = COMM_REVERSE_SIZE;
     peratom_flag = 1;
     size_peratom_cols = 0;
     peratom_freq = 1;
@@ -199,6 +207,12 @@ FixCapillaryLiquid::~FixCapillaryLiquid()
     atom->delete_callback(id, Atom::RESTART);
   }
   memory->destroy(free_liquid);
+  memory->destroy(candidates);
+  memory->destroy(released);
+  memory->destroy(offer);
+  memory->destroy(deposit);
+  memory->destroy(best_height);
+  memory->destroy(best_partner);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -210,17 +224,14 @@ int FixCapillaryLiquid::setmask()
   return mask;
 }
 
-const char *FixCapillaryLiquid::mode_name() const
-{
-  return mode_names[mode];
-}
-
 /* ---------------------------------------------------------------------- */
 
 void FixCapillaryLiquid::init()
 {
-  pair = dynamic_cast<PairGranCapillary *>(force->pair_match("gran/capillary", 1));
-  if (!pair)
+  // the pair style, and its bridges: PairGranCapillary is a CapillaryBridges
+  pair = force->pair_match("gran/capillary", 1);
+  bridges = dynamic_cast<CapillaryBridges *>(pair);
+  if (!bridges)
     error->all(FLERR, "fix capillary/liquid requires pair style gran/capillary (alone or as a "
                "sub-style of pair_style hybrid/overlay)");
   ensure_totals();
@@ -233,7 +244,7 @@ void FixCapillaryLiquid::init()
 
 void FixCapillaryLiquid::ensure_totals()
 {
-  if (mode == PairGranCapillary::LIQUID_FIXED) return;
+  if (mode == LIQUID_FIXED) return;
   if (total_liquid < 0.0 || total_from_restart) {
     const double asked =
         water >= 0.0 ? water * group->mass(igroup) / liquid_density : liquid_given;
@@ -268,7 +279,7 @@ void FixCapillaryLiquid::ensure_totals()
   }
 }
 
-double FixCapillaryLiquid::design_volume()
+double FixCapillaryLiquid::reach_volume()
 {
   ensure_totals();
   return MAX(vmax, 0.0);
@@ -278,7 +289,7 @@ double FixCapillaryLiquid::design_volume()
 
 void FixCapillaryLiquid::setup_pre_force(int /*vflag*/)
 {
-  if (mode == PairGranCapillary::LIQUID_FIXED) return;
+  if (mode == LIQUID_FIXED) return;
   if (!started) {
     start_liquid();
     started = 1;
@@ -302,14 +313,14 @@ void FixCapillaryLiquid::setup_pre_force(int /*vflag*/)
 
 void FixCapillaryLiquid::post_run()
 {
-  if (mode == PairGranCapillary::LIQUID_FIXED) return;
+  if (mode == LIQUID_FIXED) return;
   census();
   total_at_run_end = values[4];
 }
 
 void FixCapillaryLiquid::pre_force(int /*vflag*/)
 {
-  if (mode != PairGranCapillary::LIQUID_PROTOCOL1) return;
+  if (mode != LIQUID_PROTOCOL1) return;
   const bigint step = update->ntimestep;
   if (step == last_distribution) return;
   const bool due = every > 0 ? (step % every == 0) : (neighbor->ago == 0);
@@ -333,12 +344,12 @@ void FixCapillaryLiquid::start_liquid()
                    "start of the liquid (an earlier run, or a restart file with another fix "
                    "ID); they are part of the total liquid {:.6g}: {}", mode_name(), values[0],
                    held, total_liquid,
-                   mode == PairGranCapillary::LIQUID_PROTOCOL1 || !start_free
+                   mode == LIQUID_PROTOCOL1 || !start_free
                        ? "the total is distributed anew over the pairs"
                        : "the free liquid is the rest");
-  if (mode == PairGranCapillary::LIQUID_PROTOCOL1 || !start_free) {
+  if (mode == LIQUID_PROTOCOL1 || !start_free) {
     distribute("start");
-    if (mode == PairGranCapillary::LIQUID_PROTOCOL1 || last_distribution == update->ntimestep)
+    if (mode == LIQUID_PROTOCOL1 || last_distribution == update->ntimestep)
       return;
   }
   // Protocols 2, 3: the liquid as free liquid, in proportion to the atoms' masses (what a
@@ -364,24 +375,22 @@ void FixCapillaryLiquid::distribute(const char *why)
 {
   double a = 0.0, largest = 0.0;
   // liquid of broken bridges not yet collected is part of what is redistributed
-  double local = pair->drain_pool(), released = 0.0;
-  MPI_Allreduce(&local, &released, 1, MPI_DOUBLE, MPI_SUM, world);
-  pool += released;
+  collect_released();
   if (total_liquid <= 0.0) {
     last_distribution = update->ntimestep;
     return;
   }
-  const int nowhere = pair->protocol1(total_liquid, a, largest);
+  const int nowhere = protocol1(total_liquid, a, largest);
   if (nowhere) {
     if (!warned_nowhere && comm->me == 0)
       error->warning(FLERR, "fix capillary/liquid {} ({}, step {}): no pair can hold the liquid "
                      "({:.6g} volume units): {}; this warning is given once", mode_name(), why,
                      update->ntimestep, total_liquid,
-                     mode == PairGranCapillary::LIQUID_PROTOCOL1
+                     mode == LIQUID_PROTOCOL1
                          ? "it stays in the pool until a distribution succeeds"
                          : "the atoms keep it as free liquid, in proportion to their mass");
     warned_nowhere = 1;
-    if (mode == PairGranCapillary::LIQUID_PROTOCOL1 && !started) pool = total_liquid;
+    if (mode == LIQUID_PROTOCOL1 && !started) pool = total_liquid;
     return;
   }
   alpha = a;
@@ -399,7 +408,7 @@ void FixCapillaryLiquid::distribute(const char *why)
 void FixCapillaryLiquid::census()
 {
   double local[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, global[7];
-  if (pair) pair->census(local);
+  if (bridges) count_bridges(local);
   if (free_liquid)
     for (int i = 0; i < atom->nlocal; i++) local[6] += free_liquid[i];
   MPI_Allreduce(local, global, 7, MPI_DOUBLE, MPI_SUM, world);
@@ -416,7 +425,7 @@ void FixCapillaryLiquid::census()
   ruptured += global[3];
   values[5] = formed;
   values[6] = ruptured;
-  values[7] = (mode != PairGranCapillary::LIQUID_FIXED && total_liquid > 0.0)
+  values[7] = (mode != LIQUID_FIXED && total_liquid > 0.0)
       ? (total - total_liquid) / total_liquid
       : 0.0;
   if (global[4] > 0.0 && !warned_reach) {
@@ -447,11 +456,7 @@ double FixCapillaryLiquid::compute_vector(int n)
 void FixCapillaryLiquid::write_restart(FILE *fp)
 {
   // collect released liquid still held by the pair on each rank (collective)
-  if (pair) {
-    double local = pair->drain_pool(), released = 0.0;
-    MPI_Allreduce(&local, &released, 1, MPI_DOUBLE, MPI_SUM, world);
-    pool += released;
-  }
+  if (bridges) collect_released();
   double list[N_RESTART] = {(double) mode, total_liquid,      vmax, pool, alpha,
                             (double) started, (double) last_distribution, (double) every};
   if (comm->me == 0) {
@@ -466,7 +471,7 @@ void FixCapillaryLiquid::restart(char *buf)
   auto *list = (double *) buf;
   if ((int) list[0] != mode)
     error->all(FLERR, "fix capillary/liquid: the restart file holds mode {}, the input script "
-               "gives {}", mode_names[(int) list[0]], mode_name());
+               "gives {}", capillary_liquid_mode_name((int) list[0]), mode_name());
   total_liquid = list[1];
   total_from_restart = 1;
   vmax = vmax_given > 0.0 ? vmax_given : list[2];
@@ -537,5 +542,6 @@ int FixCapillaryLiquid::maxsize_restart()
 
 double FixCapillaryLiquid::memory_usage()
 {
-  return free_liquid ? (double) atom->nmax * sizeof(double) : 0.0;
+  return (free_liquid ? (double) atom->nmax * sizeof(double) : 0.0) +
+      (double) nmax_scratch * (5 * sizeof(double) + sizeof(tagint));
 }

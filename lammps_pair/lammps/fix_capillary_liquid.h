@@ -6,7 +6,10 @@
    (every N steps), 2 or 3 (per-atom free liquid).  Global output vector: bridges,
    bridge coordination number, liquid in bridges, free liquid, total liquid, formations
    and ruptures since the fix was defined, relative change of the total.
-   See doc/fix_capillary_liquid.rst.
+   The fix owns the liquid (total, pool, free liquid per atom) and runs the protocols on the
+   pair's bridges, which it reaches through CapillaryBridges (capillary_bridges.h); the
+   class is defined in fix_capillary_liquid.cpp (command, schedule, output, restart) and
+   capillary_protocols.cpp (the protocols).  See doc/fix_capillary_liquid.rst.
 ------------------------------------------------------------------------- */
 
 #ifdef FIX_CLASS
@@ -20,9 +23,16 @@ FixStyle(capillary/liquid,FixCapillaryLiquid);
 
 #include "fix.h"
 
+#include "capillary_liquid_mode.h"
+
+#include <vector>
+
+struct cb_law;
+struct cb_bridge;
+
 namespace LAMMPS_NS {
 
-class PairGranCapillary;
+struct CapillaryBridges;
 
 class FixCapillaryLiquid : public Fix {
  public:
@@ -46,17 +56,29 @@ class FixCapillaryLiquid : public Fix {
   void unpack_restart(int, int) override;
   int size_restart(int) override;
   int maxsize_restart() override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
   double memory_usage() override;
 
   // ---- used by pair gran/capillary ----
-  int mode;               // PairGranCapillary::LIQUID_*
+  int mode;               // CapillaryLiquidMode
   double fixed_volume;    // mode fixed: the bridge volume (< 0: from pair_coeff)
-  double *free_liquid;    // Protocols 2, 3: free liquid per atom [m^3]; else nullptr
-  const char *mode_name() const;
-  double design_volume();    // the largest bridge volume the neighbor reach is built for
+  const char *mode_name() const { return capillary_liquid_mode_name(mode); }
+  double reach_volume();    // vmax: the largest bridge volume the neighbor reach is built for
+  // Protocols 2, 3, phase 1 of a force evaluation (the pair's compute(), before its loop):
+  // the bridges advanced, their released liquid handed to the atoms, the free liquid offered
+  void offer_liquid();
+  // its result per atom (owned and ghost), read by the pair loop: the liquid on offer to
+  // each new contact, and Protocol 3's deposit for the bridge with best_partner
+  double *offer, *deposit;
+  tagint *best_partner;
 
  protected:
-  PairGranCapillary *pair;
+  class Pair *pair;              // pair style gran/capillary (its neighbor list)
+  CapillaryBridges *bridges;     // its bridges (the same object)
+  double *free_liquid;           // Protocols 2, 3: free liquid per atom [m^3]; else nullptr
   int every;               // Protocol 1: every N steps; 0 = at every re-neighboring
   int start_free;          // Protocols 2, 3: start as free liquid (1) or as bridges (0)
   double water, liquid_density, liquid_given, vmax_given;
@@ -77,10 +99,34 @@ class FixCapillaryLiquid : public Fix {
   bigint census_step;
   int census_valid, warned_nowhere, warned_reach;
 
+  // per-atom scratch of phase 1 (owned + ghost), beside offer, deposit, best_partner
+  int nmax_scratch;
+  double *candidates, *released, *best_height;
+  enum { COMM_REVERSE_SIZE = 4, COMM_FORWARD_SIZE = 3 };    // values an atom, each way
+
   void ensure_totals();
   void distribute(const char *why);
   void start_liquid();
   void census();
+
+  // capillary_protocols.cpp
+  void grow_scratch();
+  void update_bridges();
+  void advance_and_release(int i, int j, double rsq, double gap, cb_bridge *bridge);
+  void receive_at(int i, int j, double delz, double r);
+  void exchange_liquid();
+  void count_bridges(double *out);
+  void collect_released();
+  struct Protocol1Pairs;
+  int protocol1(double total, double &alpha, double &largest_volume);
+  void gather_candidates(Protocol1Pairs &mine);
+  int distribute_over_ranks(const Protocol1Pairs &mine, double total,
+                            std::vector<double> &volumes, double *result);
+  int distribute_on_root(const cb_law *law, const std::vector<double> &geometry,
+                         const std::vector<tagint> &keys, double total,
+                         std::vector<double> &volumes, double *result);
+  void check_alpha(double alpha);
+  void apply_volumes(const Protocol1Pairs &mine, const std::vector<double> &volumes);
 };
 
 }    // namespace LAMMPS_NS

@@ -32,14 +32,17 @@
                 takes the free liquid its atoms offer
      protocol3  as protocol2, but each atom's share goes to its lowest bridge on its
                 lower hemisphere (kept as free liquid if it has none)
-   Protocols 2 and 3 under MPI: see update_bridges() and exchange_liquid().
+   The liquid is fix capillary/liquid's: it runs the protocols on the bridges through
+   CapillaryBridges (capillary_bridges.h), the pair's base, and Protocols 2 and 3's phase 1
+   (FixCapillaryLiquid::offer_liquid, capillary_protocols.cpp) is called by compute()
+   before the pair loop, which reads its offers.
 ------------------------------------------------------------------------- */
 
 // This file: the pair style itself (construction, init_style, compute() and the pair loop with
 // its bridge steps, single()).  Its other jobs are member functions in files of their own:
 // capillary_coeff.cpp (pair_style/pair_coeff, init_one, restart), capillary_history.cpp (the
 // pair history that holds the bridges), capillary_checks.cpp (neighbor reach, radius ranges,
-// time step, periodic images), capillary_protocols.cpp (the liquid protocols).
+// time step, periodic images).
 
 #include "pair_gran_capillary.h"
 #include "fix_capillary_liquid.h"
@@ -97,25 +100,15 @@ PairGranCapillary::PairGranCapillary(LAMMPS *lmp) : Pair(lmp)
   single_extra = SV_COUNT;
   svector = new double[SV_COUNT];
 
-  type_stride = 0;
-  rad_min = rad_max = nullptr;
   dashpot = CB_DASHPOT_APPROACH;
   dt = update->dt;
   freeze_group_bit = 0;
 
-  fix_history = nullptr;
-  history_size = 0;
   fix_liquid = nullptr;
   liquid_mode = LIQUID_FIXED;
   liquid_groupbit = 0;
   bridges_possible = 1;
 
-  nmax_scratch = 0;
-  candidates = released = offer = deposit = best_height = nullptr;
-  best_partner = nullptr;
-  commflag = 0;
-
-  n_formed = n_ruptured = n_reach = pool_released = 0.0;
   dt_warned = reach_warned = 0;
   neighprev = 0;
 
@@ -157,12 +150,6 @@ PairGranCapillary::~PairGranCapillary()
     cb_law_release(l);
     delete l;
   }
-  memory->destroy(candidates);
-  memory->destroy(released);
-  memory->destroy(offer);
-  memory->destroy(deposit);
-  memory->destroy(best_height);
-  memory->destroy(best_partner);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -240,14 +227,6 @@ void PairGranCapillary::init_style()
   else
     neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_HISTORY);
 
-  // per-atom liquid exchange within a force evaluation (Protocols 2, 3)
-  if (liquid_mode == LIQUID_PROTOCOL2 || liquid_mode == LIQUID_PROTOCOL3) {
-    comm_forward = COMM_FORWARD_SIZE;
-    comm_reverse = COMM_REVERSE_SIZE;
-  } else {
-    comm_forward = comm_reverse = 0;
-  }
-
   radius_ranges();
 }
 
@@ -262,10 +241,9 @@ void PairGranCapillary::compute(int eflag, int vflag)
   }
   if (update->setupflag) derive_bridges();
 
-  if (bridges_possible && (liquid_mode == LIQUID_PROTOCOL2 || liquid_mode == LIQUID_PROTOCOL3)) {
-    update_bridges();
-    exchange_liquid();
-  }
+  // Protocols 2, 3, phase 1, by fix capillary/liquid: the bridges advanced, the released
+  // liquid handed to the atoms, the free liquid offered (read by protocol_bridge)
+  if (bridges_possible && capillary_liquid_per_atom(liquid_mode)) fix_liquid->offer_liquid();
   // compiled twice: a dry run (no type pair can hold a bridge, init_style) runs a loop
   // without any bridge code, ~14 % fewer instructions in the pair loop (callgrind,
   // bench/README.md): a scene pays only for what it uses
@@ -383,18 +361,22 @@ double PairGranCapillary::protocol_bridge(int i, int j, double gap, const TypePa
   const int itype = atom->type[i], jtype = atom->type[j];
   const cb_law *pair_law = tp.law;
   const int protocol3 = liquid_mode == LIQUID_PROTOCOL3;
+  // phase 1's result, per atom (owned and ghost): the free liquid on offer to each new
+  // contact, and Protocol 3's deposit for the bridge of best_partner
+  const double *offer = fix_liquid->offer, *deposit = fix_liquid->deposit;
+  const tagint *best_partner = fix_liquid->best_partner;
   double capillary = 0.0;
   if (bridge->active == 0.0) {
     if (gap <= 0.0 && wet_pair(i, j, tp)) {
       double offer_i = offer[i], offer_j = offer[j], available = 0.0;
       int status = cb_protocol2_take(&offer_i, &offer_j, &available);
-      check_cb(status, "liquid take", itype, jtype, radius[i], radius[j], available, gap);
+      check_cb(error, status, "liquid take", itype, jtype, radius[i], radius[j], available, gap);
       if (available > 0.0) {
         cb_transition transition;
         double none = 0.0;
         status = cb_bridge_step(pair_law, radius[i], radius[j], gap, available, bridge,
                                 &transition, &none, &capillary);
-        check_cb(status, "bridge formation", itype, jtype, radius[i], radius[j],
+        check_cb(error, status, "bridge formation", itype, jtype, radius[i], radius[j],
                  available, gap);
         if (transition == CB_BRIDGE_FORMED && counted(i, j)) n_formed += 1.0;
       }
@@ -407,12 +389,12 @@ double PairGranCapillary::protocol_bridge(int i, int j, double gap, const TypePa
       if (deposited > 0.0) {
         const double grown = bridge->volume + deposited;
         int status = cb_bridge_set_volume(pair_law, radius[i], radius[j], grown, bridge);
-        check_cb(status, "Protocol 3 deposit", itype, jtype, radius[i], radius[j], grown,
+        check_cb(error, status, "Protocol 3 deposit", itype, jtype, radius[i], radius[j], grown,
                  gap);
       }
     }
     int status = cb_bridge_force(pair_law, radius[i], radius[j], gap, bridge, &capillary);
-    check_cb(status, "capillary force", itype, jtype, radius[i], radius[j],
+    check_cb(error, status, "capillary force", itype, jtype, radius[i], radius[j],
              bridge->volume, gap);
   }
   return capillary;
@@ -436,7 +418,7 @@ double PairGranCapillary::advance_bridge(int i, int j, double rsq, double gap,
   const double before = bridge->volume;
   int status = cb_bridge_step(pair_law, radius[i], radius[j], gap, available, bridge,
                               &transition, &vol, &capillary);
-  check_cb(status, "bridge update", itype, jtype, radius[i], radius[j],
+  check_cb(error, status, "bridge update", itype, jtype, radius[i], radius[j],
            bridge->active != 0.0 ? bridge->volume : MAX(before, available), gap);
   if (transition == CB_BRIDGE_FORMED && counted(i, j)) n_formed += 1.0;
   if (transition == CB_BRIDGE_RUPTURED && counted(i, j)) n_ruptured += 1.0;
@@ -562,34 +544,18 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
 }
 
 /* ----------------------------------------------------------------------
-   each pair counted once over all ranks: with newton on a pair is in one rank's list;
-   with newton off a pair with a ghost partner is in both owners' lists and is counted
-   where the owned atom has the smaller tag
+   the rules of CapillaryBridges (shared with the fix's protocols) on this pair's atoms;
+   here, beside the loops that call them, so that they inline there
 ------------------------------------------------------------------------- */
 
 int PairGranCapillary::counted(int i, int j) const
 {
-  if (force->newton_pair || j < atom->nlocal) return 1;
-  return atom->tag[i] < atom->tag[j];
+  return counted_once(i, j, atom->nlocal, force->newton_pair, atom->tag);
 }
 
 int PairGranCapillary::wet_pair(int i, int j, const TypePair &tp) const
 {
-  if (tp.volume == 0.0) return 0;
-  if (fix_liquid) {
-    int *mask = atom->mask;
-    if (!(mask[i] & liquid_groupbit) || !(mask[j] & liquid_groupbit)) return 0;
-  }
-  return 1;
-}
-
-void PairGranCapillary::fail_cb(int status, const char *what, int itype, int jtype, double r1,
-                                double r2, double vol, double gap)
-{
-  error->one(FLERR, "pair gran/capillary: {} failed for types {} {} (law '{}', r1 = {}, "
-             "r2 = {}, volume = {}, gap = {}): {}", what, itype, jtype,
-             law_text[type_pair(itype, jtype).law_index], r1, r2, vol, gap,
-             cb_status_message((cb_status) status));
+  return wet(tp, atom->mask, liquid_groupbit, i, j);    // (liquid_groupbit 0: no fix)
 }
 
 // two atoms at distance 0 have no contact normal: stop before their NaN force is applied
@@ -620,7 +586,7 @@ double PairGranCapillary::single(int i, int j, int itype, int jtype, double rsq,
     active = bridge->active;
     vol = bridge->volume;
     int status = cb_bridge_force(law(itype, jtype), radi, radj, gap, bridge, &capillary);
-    check_cb(status, "capillary force (single)", itype, jtype, radi, radj, vol, gap);
+    check_cb(error, status, "capillary force (single)", itype, jtype, radi, radj, vol, gap);
   }
 
   double contact = 0.0, tangential = 0.0;
@@ -666,11 +632,4 @@ double PairGranCapillary::single(int i, int j, int itype, int jtype, double rsq,
 void PairGranCapillary::reset_dt()
 {
   dt = update->dt;
-}
-
-/* ---------------------------------------------------------------------- */
-
-double PairGranCapillary::memory_usage()
-{
-  return (double) nmax_scratch * (5 * sizeof(double) + sizeof(tagint));
 }
