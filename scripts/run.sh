@@ -14,7 +14,8 @@ for run in wet dry; do
   echo "capbridge: uniaxial compression, $run (LAMMPS, -np 2, size default; log $out/$run/log.lammps)"
   extra=()
   [ "$run" = dry ] && extra=(-var dry yes -var travel 0.5e-3)  # dry: a short travel shows sigma ~ 0
-  scripts/scene.sh lammps uniaxial -np 2 -size default -out "$out/$run" "${extra[@]}" >/dev/null
+  # w = 2 % (the decks take the water content in percent of the grains' mass, as the paper)
+  scripts/scene.sh lammps uniaxial -np 2 -size default -out "$out/$run" -var w 2 "${extra[@]}" >/dev/null
 done
 /usr/bin/python3 inputs/uniaxial/post.py "$out" "$out/wet" "$out/dry"
 echo "capbridge: wrote $out/stress.png, $out/strength.png, $out/snapshot.png, $out/strength.csv"

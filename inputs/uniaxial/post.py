@@ -5,13 +5,16 @@ Usage: post.py OUTDIR RUNDIR [RUNDIR ...]
 Each RUNDIR is the output directory of one run of in.lammps or in.liggghts (uniaxial.txt,
 summary.txt, optionally start.dump/end.dump). Writes into OUTDIR:
   curves.csv     run, dh/<D>, sigma [Pa] of every run
-  strength.csv   one line per run: engine, N, w, protocol, half, dry, sigma_rupt [Pa], inertial number
+  strength.csv   one line per run: engine, N, w [%], protocol, half, dry, sigma_rupt [Pa], inertial number
   stress.png     sigma(dh/<D>) of every run (Richefeu 2007 fig. 10)
   strength.png   sigma_rupt(w) per protocol, with the dry value (Richefeu 2007 fig. 12)
   snapshot.png   vertical slice of the first wet run coloured by displacement (fig. 11), if dumps exist
 and prints the strength table.
 sigma_rupt is the peak of sigma after a moving average over 5 outputs (1/40 of the travel),
 which keeps single-contact spikes of small samples out of the strength.
+The water content w is in percent of the grains' mass (summary.txt: w_percent, as the decks
+take it); a summary of the decks before December 2026 gives w as a mass fraction (key w) and
+is refused, not read a hundred times too small.
 """
 import csv
 import os
@@ -46,7 +49,11 @@ def read_summary(run):
             parts = line.split()
             if len(parts) == 2:
                 summary[parts[0]] = parts[1]
-    for key in ("N", "dry", "Dmean", "Hseal", "vwall"):
+    if "w_percent" not in summary and "w" in summary:
+        fail(f"{path} gives w {summary['w']} as a mass fraction (a run of the decks before "
+             "December 2026, which took w = 0.02 for 2 %): run it again, the decks and this "
+             "script take w in percent")
+    for key in ("N", "dry", "Dmean", "Hseal", "vwall", "w_percent"):
         if key not in summary:
             fail(f"{path} has no '{key}'")
     return summary
@@ -85,7 +92,7 @@ def strength(sigma):
 def label(s):
     if s["dry"] == "yes":
         return "dry"
-    text = f"w={100 * float(s.get('w', 'nan')):g}% {s.get('protocol', '?')}"
+    text = f"w={float(s['w_percent']):g}% {s.get('protocol', '?')}"
     return text + (" half bridges" if s.get("half") == "yes" else "")
 
 
@@ -151,7 +158,7 @@ def main(argv):
             inertial = (vwall / hseal) * dmean * np.sqrt(RHO / peak) if peak > 0 else float("inf")
             drift = float(np.max(np.abs(data[:, 6]))) if data.shape[1] > 6 else float("nan")
             rows.append(dict(run=name, engine=s.get("engine", "lammps"), N=s["N"],
-                             w=s.get("w", ""), protocol=s.get("protocol", ""),
+                             w_percent=s["w_percent"], protocol=s.get("protocol", ""),
                              half=s.get("half", "no"), dry=s["dry"],
                              sigma_rupt_Pa=f"{peak:.4g}", inertial=f"{inertial:.3g}",
                              vwall=s["vwall"], liquid_drift=f"{drift:.3g}", label=label(s)))
@@ -164,7 +171,7 @@ def main(argv):
     fig.savefig(os.path.join(outdir, "stress.png"), dpi=120)
     plt.close(fig)
 
-    keys = ["run", "engine", "N", "w", "protocol", "half", "dry", "sigma_rupt_Pa", "inertial",
+    keys = ["run", "engine", "N", "w_percent", "protocol", "half", "dry", "sigma_rupt_Pa", "inertial",
             "vwall", "liquid_drift"]
     with open(os.path.join(outdir, "strength.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=keys, extrasaction="ignore")
@@ -178,7 +185,7 @@ def main(argv):
             ax.axhline(float(r["sigma_rupt_Pa"]), color="k", ls=":", label=f"dry ({r['engine']})")
             continue
         key = (r["engine"], r["protocol"] + (" half" if r["half"] == "yes" else ""))
-        groups.setdefault(key, []).append((100 * float(r["w"]), float(r["sigma_rupt_Pa"])))
+        groups.setdefault(key, []).append((float(r["w_percent"]), float(r["sigma_rupt_Pa"])))
     for (engine, proto), pts in sorted(groups.items()):
         pts.sort()
         ax.plot([p[0] for p in pts], [p[1] for p in pts], "o-", label=f"{proto} ({engine})")

@@ -8,9 +8,10 @@
 #   files to docs/results/uniaxial/ (SIZE in their names). With CAPBRIDGE_LOCK=FILE every run
 #   holds `flock FILE` (one heavy run at a time on a machine shared by several jobs); a run is
 #   skipped when its end.dump exists already (delete the run directory to redo it).
+#   w is in percent of the grains' mass, as the decks take it (-var w 2 = 2 %).
 set -euo pipefail
 top=$(cd "$(dirname "$0")/../.." && pwd)
-usage() { sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; }
 case ${1:-} in
   -h|--help) usage; exit 0 ;;
   -*) echo "study.sh: unknown option '$1' (the size and the engines are plain words)" >&2; usage >&2; exit 2 ;;
@@ -43,9 +44,9 @@ for engine in "${engines[@]}"; do
   # first the curve sigma_rupt(w) of the first protocol, the half-bridges variant and dry,
   # then the other protocols
   for p in "${protocols[@]}"; do
-    for w in 0.02 0.04 0.06; do one "$engine" "$p-w$w" -var protocol "$p" -var w "$w"; done
+    for w in 2 4 6; do one "$engine" "$p-w$w" -var protocol "$p" -var w "$w"; done
     if [ "$p" = "${protocols[0]}" ]; then
-      for w in 0.02 0.04; do one "$engine" "$half-half-w$w" -var protocol "$half" -var w "$w" -var half yes; done
+      for w in 2 4; do one "$engine" "$half-half-w$w" -var protocol "$half" -var w "$w" -var half yes; done
       one "$engine" dry -var dry yes
     fi
   done

@@ -11,3 +11,22 @@ foreach(engine lammps liggghts)
     LABELS "scenes" TIMEOUT 600 PROCESSORS 2
     ENVIRONMENT "CAPBRIDGE_SKIP_CONFIGURE=1;CAPBRIDGE_PLUGIN=$<TARGET_FILE:capbridgeplugin>")
 endforeach()
+# w is in percent of the grains' mass (Richefeu 2007 writes w = 2 %); the decks took a mass
+# fraction until December 2026, so a w below 0.2 (the paper's range is 0.5-12 %) is refused
+# as that old reading, naming the value to give; the range is checked by name. Each run stops at the deck's checks, before any atom exists.
+function(uniaxial_refusal engine name var value message)
+  add_test(NAME scene_uniaxial_${engine}_refuses_${name}
+           COMMAND ${PROJECT_SOURCE_DIR}/scripts/scene.sh ${engine} uniaxial -np 1 -size smoke
+                   -out ${CMAKE_CURRENT_BINARY_DIR}/scenes/uniaxial_refusals/${engine}_${name} -var ${var} ${value})
+  set_tests_properties(scene_uniaxial_${engine}_refuses_${name} PROPERTIES
+    LABELS "scenes" TIMEOUT 120 PASS_REGULAR_EXPRESSION "${message}"
+    ENVIRONMENT "CAPBRIDGE_SKIP_CONFIGURE=1;CAPBRIDGE_PLUGIN=$<TARGET_FILE:capbridgeplugin>")
+endfunction()
+foreach(engine lammps liggghts)
+  uniaxial_refusal(${engine} w_fraction w 0.02
+    "uniaxial: w = 0.02 %: the uniaxial decks take percent since December 2026 \\(0.02 was a mass fraction, 2 %\\). give -var w 2")
+  uniaxial_refusal(${engine} w_fraction_small w 0.005
+    "uniaxial: w = 0.005 %: the uniaxial decks take percent since December 2026 \\(0.005 was a mass fraction, 0.5 %\\). give -var w 0.5")
+  uniaxial_refusal(${engine} w_range w 20
+    "uniaxial: w = 20 %: w is the water content in percent of the grain mass, allowed 0.2 <= w < 20")
+endforeach()

@@ -11,6 +11,9 @@ then asserts the physics:
   - the wet compressive strength is well above capillary-free noise: > 0.2 of the capillary
     stress scale 2 pi gamma (<D>/2) / <D>^2 and > 10 times the dry strength;
   - under the protocols the total liquid is conserved to 1e-12 relative at every output;
+  - the water content is in percent of the grains' mass (the wet runs pass -var w 2): the
+    liquid of the sample (summary.txt liquid_total) is w/100 of the grain mass M over the
+    water density, M = 2500 kg/m^3 x the spheres' volume from start.dump, to 1e-9 relative;
   - the bridges exist (bridge coordination z between 2 and 12 at the start of the compression);
   - half of the bridges removed: z between 0.35 and 0.65 of the full sample's z.
 Numpy only; standard library otherwise.
@@ -24,6 +27,8 @@ import numpy as np
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 GAMMA, DMEAN = 0.0728, 1.05e-3
+RHO, RHO_WATER = 2500.0, 1000.0                             # glass, water [kg/m^3]
+W_PERCENT = 2.0                                             # water content of the wet runs [%]
 SIGMA_CAP = 2 * math.pi * GAMMA * (DMEAN / 2) / DMEAN ** 2   # capillary stress scale [Pa]
 failures = []
 
@@ -55,6 +60,28 @@ def run(engine, workdir, name, *variables):
     return summary, curve
 
 
+def water_volume(out):
+    """(w/100) M / rho_water, M from the radii of start.dump: the liquid of W_PERCENT %."""
+    with open(os.path.join(out, "start.dump")) as f:
+        lines = f.readlines()
+    start = next(i for i, line in enumerate(lines) if line.startswith("ITEM: ATOMS"))
+    col = lines[start].split()[2:].index("radius")
+    radii = np.array([float(line.split()[col]) for line in lines[start + 1:] if line.strip()])
+    mass = RHO * np.sum(4.0 / 3.0 * math.pi * radii ** 3)
+    return W_PERCENT / 100 * mass / RHO_WATER
+
+
+def check_water(name, summary, out):
+    expected = water_volume(out)
+    if "liquid_total" not in summary:
+        check(False, f"{name}: summary.txt gives the liquid of the sample (liquid_total)")
+        return
+    got = float(summary["liquid_total"])
+    check(abs(got - expected) <= 1e-9 * expected,
+          f"{name}: liquid {got:.6g} m^3 = w {summary['w_percent']} % of the grain mass / rho_water "
+          f"{expected:.6g} m^3 (1e-9 relative)")
+
+
 def strength(curve):
     """Peak of sigma after a moving average over 5 outputs (as inputs/uniaxial/post.py)."""
     return float(np.max(np.convolve(curve[:, 3], np.ones(5) / 5, mode="valid")))
@@ -66,7 +93,9 @@ def main():
     engine, workdir = sys.argv[1], sys.argv[2]
     os.makedirs(workdir, exist_ok=True)
     wet_protocol = "protocol1" if engine == "lammps" else "protocol2"
-    wet, wet_curve = run(engine, workdir, "wet", ("protocol", wet_protocol))
+    w = f"{W_PERCENT:g}"
+    wet, wet_curve = run(engine, workdir, "wet", ("protocol", wet_protocol), ("w", w))
+    check_water(wet_protocol, wet, os.path.join(workdir, "wet"))
     dry, dry_curve = run(engine, workdir, "dry", ("dry", "yes"), ("travel", "0.3e-3"))
     d = float(wet["Dmean"])
 
@@ -90,7 +119,8 @@ def main():
 
     if engine == "lammps":
         half, half_curve = run(engine, workdir, "protocol3_half", ("protocol", "protocol3"),
-                               ("half", "yes"))
+                               ("half", "yes"), ("w", w))
+        check_water("protocol3, half the bridges", half, os.path.join(workdir, "protocol3_half"))
         check(np.all(np.abs(half_curve[:, 6]) < 1e-12),
               f"protocol3: liquid conserved, max |relative change| {np.max(np.abs(half_curve[:, 6])):.3g} < 1e-12")
         ratio = half_curve[0, 5] / z0
