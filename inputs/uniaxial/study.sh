@@ -3,25 +3,38 @@
 # w = 2, 4, 6 % under every liquid protocol each engine has (LAMMPS: Protocols 1, 2, 3;
 # LIGGGHTS: fixed volume and Protocol 2 -- it has no Protocol 1 or 3), half of the bridges removed
 # (LAMMPS, w = 2 and 4 %, Protocol 1; LIGGGHTS, fixed volume), and dry; then post.py.
-# Usage: inputs/uniaxial/study.sh [smoke|default|paper] [lammps] [liggghts]
+# w is in percent of the grains' mass, as the decks take it (-var w 2 = 2 %).
+# Usage: inputs/uniaxial/study.sh [-seed N] [smoke|default|paper] [lammps] [liggghts]
 #   (default: smoke, both engines). Writes out/uniaxial/study-SIZE/ and copies the CSV and PNG
 #   files to docs/results/uniaxial/ (SIZE in their names). With CAPBRIDGE_LOCK=FILE every run
 #   holds `flock FILE` (one heavy run at a time on a machine shared by several jobs); a run is
 #   skipped when its end.dump exists already (delete the run directory to redo it).
-#   w is in percent of the grains' mass, as the decks take it (-var w 2 = 2 %).
+#   -seed N: every run gets -var seed N, another packing (without it each deck's own seed:
+#   LAMMPS 481903, LIGGGHTS 86028121; LIGGGHTS wants a prime above 10000, e.g. 15485863);
+#   SIZE becomes SIZE-seedN in the directory and the file names.
 set -euo pipefail
 top=$(cd "$(dirname "$0")/../.." && pwd)
-usage() { sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; }
+seed=()
+if [ "${1:-}" = -seed ]; then
+  case ${2:-} in
+    ''|*[!0-9]*) echo "study.sh: -seed needs a whole number, not '${2:-}'" >&2; usage >&2; exit 2 ;;
+  esac
+  seed=(-var seed "$2")
+  shift 2
+fi
 case ${1:-} in
   -h|--help) usage; exit 0 ;;
-  -*) echo "study.sh: unknown option '$1' (the size and the engines are plain words)" >&2; usage >&2; exit 2 ;;
+  -*) echo "study.sh: unknown option '$1' (-seed N comes first; the size and the engines are plain words)" >&2; usage >&2; exit 2 ;;
 esac
 size=${1:-smoke}
 shift || true
 engines=("$@")
 [ ${#engines[@]} -gt 0 ] || engines=(lammps liggghts)
 case $size in smoke|default|paper) ;; *) echo "study.sh: size must be smoke, default or paper, not '$size'" >&2; usage >&2; exit 2 ;; esac
-out=$top/out/uniaxial/study-$size
+tag=$size                             # the size, and the seed when one is given
+[ ${#seed[@]} -eq 0 ] || tag=$size-seed${seed[2]}
+out=$top/out/uniaxial/study-$tag
 mkdir -p "$out"
 runs=()
 one() {  # one ENGINE NAME -var ... : runs a case unless it finished before
@@ -32,7 +45,7 @@ one() {  # one ENGINE NAME -var ... : runs a case unless it finished before
   echo "study.sh: $engine $name" >&2
   local lock=()
   [ -n "${CAPBRIDGE_LOCK:-}" ] && lock=(flock "$CAPBRIDGE_LOCK")
-  "${lock[@]}" "$top/scripts/scene.sh" "$engine" uniaxial -np 2 -size "$size" -out "$dir" "$@" >"$dir.screen" 2>&1 \
+  "${lock[@]}" "$top/scripts/scene.sh" "$engine" uniaxial -np 2 -size "$size" -out "$dir" "${seed[@]+"${seed[@]}"}" "$@" >"$dir.screen" 2>&1 \
     || { echo "study.sh: $engine $name failed, see $dir.screen" >&2; exit 1; }
 }
 for engine in "${engines[@]}"; do
@@ -55,6 +68,6 @@ done
 dest=$top/docs/results/uniaxial
 mkdir -p "$dest"
 for f in curves.csv strength.csv stress.png strength.png snapshot.png strength.txt; do
-  [ -f "$out/$f" ] && cp "$out/$f" "$dest/${f%.*}-$size.${f##*.}"
+  [ -f "$out/$f" ] && cp "$out/$f" "$dest/${f%.*}-$tag.${f##*.}"
 done
 echo "study.sh: wrote $out and $dest"

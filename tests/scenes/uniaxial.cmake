@@ -13,7 +13,8 @@ foreach(engine lammps liggghts)
 endforeach()
 # w is in percent of the grains' mass (Richefeu 2007 writes w = 2 %); the decks took a mass
 # fraction until December 2026, so a w below 0.2 (the paper's range is 0.5-12 %) is refused
-# as that old reading, naming the value to give; the range is checked by name. Each run stops at the deck's checks, before any atom exists.
+# as that old reading, naming the value to give; the range and the packing seed are checked
+# by name. Each run stops at the deck's checks, before any atom exists.
 function(uniaxial_refusal engine name var value message)
   add_test(NAME scene_uniaxial_${engine}_refuses_${name}
            COMMAND ${PROJECT_SOURCE_DIR}/scripts/scene.sh ${engine} uniaxial -np 1 -size smoke
@@ -29,4 +30,5 @@ foreach(engine lammps liggghts)
     "uniaxial: w = 0.005 %: the uniaxial decks take percent since December 2026 \\(0.005 was a mass fraction, 0.5 %\\). give -var w 0.5")
   uniaxial_refusal(${engine} w_range w 20
     "uniaxial: w = 20 %: w is the water content in percent of the grain mass, allowed 0.2 <= w < 20")
+  uniaxial_refusal(${engine} seed seed 2.5 "uniaxial: seed must be a .*, not 2.5")
 endforeach()
