@@ -17,3 +17,14 @@ foreach(_ds_engine lammps liggghts)
   set_tests_properties(direct_shear_${_ds_engine} PROPERTIES
                        LABELS "scenes" TIMEOUT 600 PROCESSORS 2 ENVIRONMENT "${_ds_env}")
 endforeach()
+# the bound of w names its unit, percent (every deck takes w in percent since December 2026;
+# direct shear's range starts at 0, dry, and its study runs w = 0.1 %, the paper's w_m: no
+# lower bound)
+foreach(_ds_engine lammps liggghts)
+  add_test(NAME direct_shear_${_ds_engine}_refuses_w
+           COMMAND ${PROJECT_SOURCE_DIR}/scripts/scene.sh ${_ds_engine} direct_shear -np 1 -size smoke
+                   -out ${CMAKE_CURRENT_BINARY_DIR}/scenes/direct_shear/refusals_${_ds_engine} -var w 20)
+  set_tests_properties(direct_shear_${_ds_engine}_refuses_w PROPERTIES
+    LABELS "scenes" TIMEOUT 120 ENVIRONMENT "${_ds_env}"
+    PASS_REGULAR_EXPRESSION "ERROR: need sigma > 0 Pa and 0 <= w < 20, w in percent of the grain mass \\(1 = 1 %, not a fraction\\), got sigma 200, w 20")
+endforeach()
