@@ -10,8 +10,8 @@
 #   holds `flock FILE` (one heavy run at a time on a machine shared by several jobs); a run is
 #   skipped when its end.dump exists already (delete the run directory to redo it).
 #   -seed N: every run gets -var seed N, another packing (without it each deck's own seed:
-#   LAMMPS 481903, LIGGGHTS 86028121; LIGGGHTS wants a prime above 10000, e.g. 15485863);
-#   SIZE becomes SIZE-seedN in the directory and the file names.
+#   LAMMPS 481903, LIGGGHTS 86028121; LIGGGHTS wants a prime above 10000 that none of its
+#   other seeds uses, e.g. 86028157); SIZE becomes SIZE-seedN in the directory and file names.
 set -euo pipefail
 top=$(cd "$(dirname "$0")/../.." && pwd)
 usage() { sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; }
