@@ -214,7 +214,62 @@ void PairGranCapillary::check_timestep()
   if (dt_warned) return;
   const int n = atom->ntypes;
   const int np = (n + 1) * (n + 1);
-  // [mass per type | smallest volume per type pair | minus the largest], all reduced by MIN
+  reduce_timestep_ranges();
+  const double *mass = timestep_global.data();
+  const double *vlo_all = mass + n + 1, *minus_vhi_all = vlo_all + np;
+
+  // the bound per type pair, for the volumes it was last evaluated at
+  if (update->setupflag || bound_volumes.size() != (size_t) (2 * np)) {
+    bound_volumes.assign(2 * np, -1.0);
+    capillary_bound.assign(np, 0.0);
+  }
+  for (int i = 1; i <= n; i++)
+    for (int j = i; j <= n; j++) {
+      if (!setflag[i][j] || mass[i] == HUGE_VAL || mass[j] == HUGE_VAL) continue;
+      const int ij = i * (n + 1) + j;
+      double volumes[2] = {0.0, 0.0};
+      if (liquid_mode == LIQUID_FIXED)
+        volumes[0] = design_volume(i, j);
+      else if (-minus_vhi_all[ij] > 0.0) {
+        volumes[0] = vlo_all[ij];
+        volumes[1] = -minus_vhi_all[ij];
+      }
+      if (volumes[0] != bound_volumes[2 * ij] || volumes[1] != bound_volumes[2 * ij + 1]) {
+        capillary_bound[ij] = capillary_stiffness(i, j, volumes);
+        bound_volumes[2 * ij] = volumes[0];
+        bound_volumes[2 * ij + 1] = volumes[1];
+      }
+      const double m = MIN(mass[i], mass[j]);
+      const double capillary = capillary_bound[ij];
+      const TypePair &tp = type_pair(i, j);
+      const double contact = tp.contact_on ? tp.contact.normal_stiffness : 0.0;
+      const double k = MAX(contact, capillary);
+      if (!(k > 0.0)) continue;
+      const double limit = 0.1 * MY_PI * sqrt(m / k);
+      // a deck that sets dt to exactly this limit is within it: allow for its rounding
+      if (update->dt > limit * (1.0 + 1e-12)) {
+        dt_warned = 1;
+        if (comm->me == 0)
+          error->warning(FLERR, "pair gran/capillary: time step {:.6g} s exceeds the limit "
+                         "{:.6g} s = 10% of pi sqrt(m/k) for types {} {} (smallest mass "
+                         "m = {:.6g}, k = {:.6g}: the larger of k_n = {:.6g} and "
+                         "the capillary stiffness bound {:.6g}); this warning is given once",
+                         update->dt, limit, i, j, m, k, contact, capillary);
+        return;
+      }
+    }
+}
+
+/* ----------------------------------------------------------------------
+   check_timestep's one reduction, into timestep_global: [the smallest mass per type |
+   the smallest bridge volume per type pair | minus the largest] over all ranks (the
+   volumes in the protocol modes only: in mode fixed they are the design volumes)
+------------------------------------------------------------------------- */
+
+void PairGranCapillary::reduce_timestep_ranges()
+{
+  const int n = atom->ntypes;
+  const int np = (n + 1) * (n + 1);
   timestep_local.assign(n + 1 + 2 * np, HUGE_VAL);
   timestep_global.resize(timestep_local.size());
   double *mass_lo = timestep_local.data();
@@ -238,59 +293,27 @@ void PairGranCapillary::check_timestep()
   }
   MPI_Allreduce(timestep_local.data(), timestep_global.data(), (int) timestep_local.size(),
                 MPI_DOUBLE, MPI_MIN, world);
-  const double *mass = timestep_global.data();
-  const double *vlo_all = mass + n + 1, *minus_vhi_all = vlo_all + np;
+}
 
-  // the bound per type pair, for the volumes it was last evaluated at
-  if (update->setupflag || bound_volumes.size() != (size_t) (2 * np)) {
-    bound_volumes.assign(2 * np, -1.0);
-    capillary_bound.assign(np, 0.0);
+/* ----------------------------------------------------------------------
+   the capillary stiffness bound of type pair i, j: the largest over the corners of both
+   radius ranges and the (up to two) bridge volumes given (0: none)
+------------------------------------------------------------------------- */
+
+double PairGranCapillary::capillary_stiffness(int i, int j, const double *volumes) const
+{
+  double capillary = 0.0;
+  const double ri[2] = {rad_min[i], rad_max[i]}, rj[2] = {rad_min[j], rad_max[j]};
+  for (int v = 0; v < 2; v++) {
+    const double vol = volumes[v];
+    if (!(vol > 0.0)) continue;
+    for (double r1 : ri)
+      for (double r2 : rj) {
+        double k = 0.0;
+        if (r1 > 0.0 && r2 > 0.0 &&
+            cb_capillary_stiffness_bound(law(i, j), r1, r2, vol, &k) == CB_OK)
+          capillary = MAX(capillary, k);
+      }
   }
-  for (int i = 1; i <= n; i++)
-    for (int j = i; j <= n; j++) {
-      if (!setflag[i][j] || mass[i] == HUGE_VAL || mass[j] == HUGE_VAL) continue;
-      const int ij = i * (n + 1) + j;
-      double volumes[2] = {0.0, 0.0};
-      if (liquid_mode == LIQUID_FIXED)
-        volumes[0] = design_volume(i, j);
-      else if (-minus_vhi_all[ij] > 0.0) {
-        volumes[0] = vlo_all[ij];
-        volumes[1] = -minus_vhi_all[ij];
-      }
-      if (volumes[0] != bound_volumes[2 * ij] || volumes[1] != bound_volumes[2 * ij + 1]) {
-        double capillary = 0.0;
-        const double ri[2] = {rad_min[i], rad_max[i]}, rj[2] = {rad_min[j], rad_max[j]};
-        for (double vol : volumes) {
-          if (!(vol > 0.0)) continue;
-          for (double r1 : ri)
-            for (double r2 : rj) {
-              double k = 0.0;
-              if (r1 > 0.0 && r2 > 0.0 &&
-                  cb_capillary_stiffness_bound(law(i, j), r1, r2, vol, &k) == CB_OK)
-                capillary = MAX(capillary, k);
-            }
-        }
-        capillary_bound[ij] = capillary;
-        bound_volumes[2 * ij] = volumes[0];
-        bound_volumes[2 * ij + 1] = volumes[1];
-      }
-      const double m = MIN(mass[i], mass[j]);
-      const double capillary = capillary_bound[ij];
-      const TypePair &tp = type_pair(i, j);
-      const double contact = tp.contact_on ? tp.contact.normal_stiffness : 0.0;
-      const double k = MAX(contact, capillary);
-      if (!(k > 0.0)) continue;
-      const double limit = 0.1 * MY_PI * sqrt(m / k);
-      // a deck that sets dt to exactly this limit is within it: allow for its rounding
-      if (update->dt > limit * (1.0 + 1e-12)) {
-        dt_warned = 1;
-        if (comm->me == 0)
-          error->warning(FLERR, "pair gran/capillary: time step {:.6g} s exceeds the limit "
-                         "{:.6g} s = 10% of pi sqrt(m/k) for types {} {} (smallest mass "
-                         "m = {:.6g}, k = {:.6g}: the larger of k_n = {:.6g} and "
-                         "the capillary stiffness bound {:.6g}); this warning is given once",
-                         update->dt, limit, i, j, m, k, contact, capillary);
-        return;
-      }
-    }
+  return capillary;
 }

@@ -107,6 +107,42 @@ void PairGranCapillary::parse_coeff(int ilo, int ihi, int jlo, int jhi, int narg
     return lo == hi ? std::to_string(lo) : fmt::format("{}*{}", lo, hi);
   };
   const std::string where = fmt::format("pair_coeff {} {}", range(ilo, ihi), range(jlo, jhi));
+  TypePair given;    // what this pair_coeff gives every type pair of its ranges
+  const int iarg = parse_contact(where, narg, arg, given);
+  cb_law one;
+  std::string spec;
+  parse_law(where, iarg, narg, arg, one, spec, given.volume);
+  const int index = prepared_law(where, one, spec);
+
+  std::string text;
+  for (int k = 0; k < narg; k++) text += (k ? " " : "") + std::string(arg[k]);
+
+  int count = 0;
+  const int n = atom->ntypes;
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      TypePair &tp = type_pairs[i * type_stride + j];
+      tp.contact = given.contact;
+      tp.volume = given.volume;
+      tp.law = laws[index];
+      tp.contact_on = given.contact_on;
+      tp.law_index = index;
+      type_pairs[j * type_stride + i] = tp;
+      coeff_text[(size_t) i * (n + 1) + j] = text;
+      setflag[i][j] = 1;
+      count++;
+    }
+  if (count == 0) error->all(FLERR, "{}: no type pair I <= J in these ranges", where);
+}
+
+/* ----------------------------------------------------------------------
+   pair_coeff, the contact part: 'kn kt damping mu' or 'contact none' into tp.contact and
+   tp.contact_on; returns the index of the next argument
+------------------------------------------------------------------------- */
+
+int PairGranCapillary::parse_contact(const std::string &where, int narg, char **arg,
+                                     TypePair &tp)
+{
   auto number = [&](int k, const char *name, const char *meaning) -> double {
     if (k >= narg)
       error->all(FLERR, "{}: missing coefficient {} ({}); {}", where, name, meaning, coeff_syntax);
@@ -120,29 +156,36 @@ void PairGranCapillary::parse_coeff(int ilo, int ihi, int jlo, int jhi, int narg
     return utils::numeric(FLERR, arg[k], false, lmp);
   };
 
-  cb_contact_law contact_one{};    // contact none: all zero
-  int contact_on_one = 1;
-  int iarg = 0;
+  tp.contact = cb_contact_law{};    // contact none: all zero
+  tp.contact_on = 1;
   if (narg > 0 && strcmp(arg[0], "contact") == 0) {
     if (narg < 2 || strcmp(arg[1], "none") != 0)
       error->all(FLERR, "{}: 'contact' must be followed by 'none' (no contact force: the "
                  "capillary force only); {}", where, coeff_syntax);
-    contact_on_one = 0;
-    iarg = 2;
-  } else {
-    const double kn_one = number(0, "kn", "normal stiffness, force/distance");
-    const double kt_one = number(1, "kt", "tangential stiffness, force/distance");
-    const double damping_one = number(2, "damping", "normal damping rate alpha_n, 0..1");
-    const double mu_one = number(3, "mu", "friction coefficient");
-    // the core's rule for the coefficients (the dashpot rule is pair_style's, applied by
-    // init_one: any one here)
-    cb_message msg;
-    if (cb_contact_law_init(&contact_one, kn_one, kt_one, damping_one, mu_one,
-                            CB_DASHPOT_APPROACH, &msg) != CB_OK)
-      error->all(FLERR, "{}: {}", where, msg.text);
-    iarg = 4;
+    tp.contact_on = 0;
+    return 2;
   }
+  const double kn_one = number(0, "kn", "normal stiffness, force/distance");
+  const double kt_one = number(1, "kt", "tangential stiffness, force/distance");
+  const double damping_one = number(2, "damping", "normal damping rate alpha_n, 0..1");
+  const double mu_one = number(3, "mu", "friction coefficient");
+  // the core's rule for the coefficients (the dashpot rule is pair_style's, applied by
+  // init_one: any one here)
+  cb_message msg;
+  if (cb_contact_law_init(&tp.contact, kn_one, kt_one, damping_one, mu_one, CB_DASHPOT_APPROACH,
+                          &msg) != CB_OK)
+    error->all(FLERR, "{}: {}", where, msg.text);
+  return 4;
+}
 
+/* ----------------------------------------------------------------------
+   pair_coeff, from arg[iarg]: 'law LAW [keyword value ...]' into the law `one` (not yet
+   prepared), its specification `spec` and the bridge volume (-1: not given)
+------------------------------------------------------------------------- */
+
+void PairGranCapillary::parse_law(const std::string &where, int iarg, int narg, char **arg,
+                                  cb_law &one, std::string &spec, double &volume_one)
+{
   if (iarg >= narg || strcmp(arg[iarg], "law") != 0)
     error->all(FLERR, "{}: missing 'law LAW' after the contact coefficients{} (laws: {}); {}",
                where, iarg < narg ? fmt::format(", found '{}'", arg[iarg]) : "",
@@ -152,14 +195,13 @@ void PairGranCapillary::parse_coeff(int ilo, int ihi, int jlo, int jhi, int narg
   cb_model model;
   if (cb_model_from_name(arg[iarg + 1], &model) != CB_OK)
     error->all(FLERR, "{}: unknown law '{}': allowed {}", where, arg[iarg + 1], cb_law_names());
-  std::string spec = arg[iarg + 1];
+  spec = arg[iarg + 1];
   iarg += 2;
 
   // gamma has no default: a placeholder until the keyword is read
-  cb_law one;
   cb_law_init(&one, model, 1.0, 0.0);
   int have_gamma = 0;
-  double volume_one = -1.0;
+  volume_one = -1.0;
   cb_keywords_given given = {0};  // a repeated keyword is refused, as in the CLI
   while (iarg < narg) {
     const char *key = arg[iarg];
@@ -189,45 +231,31 @@ void PairGranCapillary::parse_coeff(int ilo, int ihi, int jlo, int jhi, int narg
   if (!have_gamma)
     error->all(FLERR, "{}: law {} needs 'gamma' (the surface tension, force/distance)", where,
                cb_model_name(model));
+}
 
-  // one prepared law per distinct law (by value: 'gamma 0.0728' and 'gamma 7.28e-2 theta 0'
-  // are one law)
+/* ----------------------------------------------------------------------
+   the index in laws of the prepared law equal to `one`, prepared now if new: one prepared
+   law per distinct law (by value: 'gamma 0.0728' and 'gamma 7.28e-2 theta 0' are one law)
+------------------------------------------------------------------------- */
+
+int PairGranCapillary::prepared_law(const std::string &where, const cb_law &one,
+                                    const std::string &spec)
+{
   int index = -1;
   for (size_t k = 0; k < laws.size(); k++)
     if (cb_law_same(laws[k], &one)) index = (int) k;
-  if (index < 0) {
-    cb_message msg;
-    msg.text[0] = '\0';
-    auto *prepared = new cb_law(one);
-    if (cb_law_prepare(prepared, &msg) != CB_OK) {
-      cb_law_release(prepared);
-      delete prepared;
-      error->all(FLERR, "{}: law {}: {}", where, cb_model_name(model), msg.text);
-    }
-    laws.push_back(prepared);
-    law_text.push_back(spec);
-    index = (int) laws.size() - 1;
+  if (index >= 0) return index;
+  cb_message msg;
+  msg.text[0] = '\0';
+  auto *prepared = new cb_law(one);
+  if (cb_law_prepare(prepared, &msg) != CB_OK) {
+    cb_law_release(prepared);
+    delete prepared;
+    error->all(FLERR, "{}: law {}: {}", where, cb_model_name(one.model), msg.text);
   }
-
-  std::string text;
-  for (int k = 0; k < narg; k++) text += (k ? " " : "") + std::string(arg[k]);
-
-  int count = 0;
-  const int n = atom->ntypes;
-  for (int i = ilo; i <= ihi; i++)
-    for (int j = MAX(jlo, i); j <= jhi; j++) {
-      TypePair &tp = type_pairs[i * type_stride + j];
-      tp.contact = contact_one;
-      tp.volume = volume_one;
-      tp.law = laws[index];
-      tp.contact_on = contact_on_one;
-      tp.law_index = index;
-      type_pairs[j * type_stride + i] = tp;
-      coeff_text[(size_t) i * (n + 1) + j] = text;
-      setflag[i][j] = 1;
-      count++;
-    }
-  if (count == 0) error->all(FLERR, "{}: no type pair I <= J in these ranges", where);
+  laws.push_back(prepared);
+  law_text.push_back(spec);
+  return (int) laws.size() - 1;
 }
 
 /* ---------------------------------------------------------------------- */

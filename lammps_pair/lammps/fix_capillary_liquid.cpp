@@ -70,6 +70,56 @@ FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
   every = 0;
   start_free = 0;
   water = liquid_density = liquid_given = vmax_given = -1.0;
+  parse_keywords(parse_fixed_volume(narg, arg), narg, arg);
+  if (mode != LIQUID_FIXED && (water < 0.0) == (liquid_given < 0.0))
+    error->all(FLERR, "fix capillary/liquid {}: give the liquid once: 'water W RHO' (mass "
+               "fraction, liquid density) or 'liquid V' (volume units)", mode_name());
+
+  vector_flag = 1;
+  size_vector = 8;
+  global_freq = 1;
+  // counts and volumes are sums over the atoms (extensive); z and the relative change not
+  extvector = -1;
+  extlist = new int[8]{1, 0, 1, 1, 1, 1, 1, 0};
+  restart_global = 1;
+
+  if (capillary_liquid_per_atom(mode)) {
+    // the per-atom liquid exchange within a force evaluation (exchange_liquid)
+    comm_forward = COMM_FORWARD_SIZE;
+    comm_reverse = COMM_REVERSE_SIZE;
+    peratom_flag = 1;
+    size_peratom_cols = 0;
+    peratom_freq = 1;
+    restart_peratom = 1;
+    create_attribute = 1;
+    maxexchange = 1;
+    FixCapillaryLiquid::grow_arrays(atom->nmax);
+    atom->add_callback(Atom::GROW);
+    atom->add_callback(Atom::RESTART);
+    for (int i = 0; i < atom->nlocal; i++) free_liquid[i] = 0.0;
+  }
+
+  total_liquid = -1.0;
+  vmax = -1.0;
+  pool = 0.0;
+  alpha = 0.0;
+  started = 0;
+  last_distribution = -1;
+  for (double &v : values) v = 0.0;
+  formed = ruptured = 0.0;
+  total_at_run_end = -1.0;
+  total_from_restart = 0;
+  census_step = -1;
+  census_valid = 0;
+  warned_nowhere = warned_reach = 0;
+}
+
+/* ----------------------------------------------------------------------
+   mode fixed: the optional bridge volume after the mode; returns the next argument
+------------------------------------------------------------------------- */
+
+int FixCapillaryLiquid::parse_fixed_volume(int narg, char **arg)
+{
   int iarg = 4;
   static const char *const keywords[] = {"water", "liquid", "every", "start", "vmax"};
   const bool is_keyword =
@@ -86,6 +136,15 @@ FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
                  arg[iarg]);
     iarg++;
   }
+  return iarg;
+}
+
+/* ----------------------------------------------------------------------
+   the keywords, from arg[iarg]: water W RHO | liquid V, every N, start bridges|free, vmax V
+------------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::parse_keywords(int iarg, int narg, char **arg)
+{
   const bool protocol = mode != LIQUID_FIXED;
   auto need = [&](int count, const char *keyword) {
     if (iarg + count >= narg)
@@ -153,47 +212,6 @@ FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
       error->all(FLERR, "fix capillary/liquid: unknown keyword '{}': allowed water, liquid, "
                  "every, start, vmax", key);
   }
-  if (protocol && (water < 0.0) == (liquid_given < 0.0))
-    error->all(FLERR, "fix capillary/liquid {}: give the liquid once: 'water W RHO' (mass "
-               "fraction, liquid density) or 'liquid V' (volume units)", mode_name());
-
-  vector_flag = 1;
-  size_vector = 8;
-  global_freq = 1;
-  // counts and volumes are sums over the atoms (extensive); z and the relative change not
-  extvector = -1;
-  extlist = new int[8]{1, 0, 1, 1, 1, 1, 1, 0};
-  restart_global = 1;
-
-  if (capillary_liquid_per_atom(mode)) {
-    // the per-atom liquid exchange within a force evaluation (exchange_liquid)
-    comm_forward = COMM_FORWARD_SIZE;
-    comm_reverse = COMM_REVERSE_SIZE;
-    peratom_flag = 1;
-    size_peratom_cols = 0;
-    peratom_freq = 1;
-    restart_peratom = 1;
-    create_attribute = 1;
-    maxexchange = 1;
-    FixCapillaryLiquid::grow_arrays(atom->nmax);
-    atom->add_callback(Atom::GROW);
-    atom->add_callback(Atom::RESTART);
-    for (int i = 0; i < atom->nlocal; i++) free_liquid[i] = 0.0;
-  }
-
-  total_liquid = -1.0;
-  vmax = -1.0;
-  pool = 0.0;
-  alpha = 0.0;
-  started = 0;
-  last_distribution = -1;
-  for (double &v : values) v = 0.0;
-  formed = ruptured = 0.0;
-  total_at_run_end = -1.0;
-  total_from_restart = 0;
-  census_step = -1;
-  census_valid = 0;
-  warned_nowhere = warned_reach = 0;
 }
 
 /* ---------------------------------------------------------------------- */

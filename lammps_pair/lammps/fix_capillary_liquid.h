@@ -104,6 +104,8 @@ class FixCapillaryLiquid : public Fix {
   double *candidates, *released, *best_height;
   enum { COMM_REVERSE_SIZE = 4, COMM_FORWARD_SIZE = 3 };    // values an atom, each way
 
+  int parse_fixed_volume(int narg, char **arg);
+  void parse_keywords(int iarg, int narg, char **arg);
   void ensure_totals();
   void distribute(const char *why);
   void start_liquid();

@@ -169,7 +169,39 @@ void PairGranCapillary::init_style()
   if (freezes.size() > 1) error->all(FLERR, "Only one fix freeze command at a time allowed");
   freeze_group_bit = freezes.empty() ? 0 : freezes.front()->groupbit;
 
-  // the liquid
+  find_liquid();
+
+  // The neighbor list. With liquid: a plain half list reaching the type-pair cutoff
+  // (init_one), since bridges act beyond contact and the list must hold every pair up to
+  // the largest rupture distance. Without (no type pair can form a bridge and none holds
+  // one): the per-pair size list of LAMMPS's dry granular styles, cut at R_i + R_j + skin,
+  // so that a dry scene pays for its contacts only.
+  const int n = atom->ntypes;
+  bridges_possible = 0;
+  for (int i = 1; i <= n; i++)
+    for (int j = i; j <= n; j++)
+      if (setflag[i][j] &&
+          (liquid_mode == LIQUID_FIXED ? design_volume(i, j) > 0.0
+                                        : type_pair(i, j).volume != 0.0))
+        bridges_possible = 1;
+  create_history();
+  held_volumes();
+  for (int i = 1; i <= n; i++)
+    if (held_volume[i] > 0.0) bridges_possible = 1;
+  if (bridges_possible)
+    neighbor->add_request(this, NeighConst::REQ_HISTORY);
+  else
+    neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_HISTORY);
+
+  radius_ranges();
+}
+
+/* ----------------------------------------------------------------------
+   init_style: fix capillary/liquid (if any) and what it requires of the coefficients
+------------------------------------------------------------------------- */
+
+void PairGranCapillary::find_liquid()
+{
   auto liquids = modify->get_fix_by_style("^capillary/liquid$");
   if (liquids.size() > 1) error->all(FLERR, "Only one fix capillary/liquid at a time allowed");
   fix_liquid = liquids.empty() ? nullptr : dynamic_cast<FixCapillaryLiquid *>(liquids.front());
@@ -205,29 +237,6 @@ void PairGranCapillary::init_style()
                        fix_liquid->mode_name(), law_text[first], law_text[index]);
         }
   }
-
-  // The neighbor list. With liquid: a plain half list reaching the type-pair cutoff
-  // (init_one), since bridges act beyond contact and the list must hold every pair up to
-  // the largest rupture distance. Without (no type pair can form a bridge and none holds
-  // one): the per-pair size list of LAMMPS's dry granular styles, cut at R_i + R_j + skin,
-  // so that a dry scene pays for its contacts only.
-  bridges_possible = 0;
-  for (int i = 1; i <= n; i++)
-    for (int j = i; j <= n; j++)
-      if (setflag[i][j] &&
-          (liquid_mode == LIQUID_FIXED ? design_volume(i, j) > 0.0
-                                        : type_pair(i, j).volume != 0.0))
-        bridges_possible = 1;
-  create_history();
-  held_volumes();
-  for (int i = 1; i <= n; i++)
-    if (held_volume[i] > 0.0) bridges_possible = 1;
-  if (bridges_possible)
-    neighbor->add_request(this, NeighConst::REQ_HISTORY);
-  else
-    neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_HISTORY);
-
-  radius_ranges();
 }
 
 /* ---------------------------------------------------------------------- */

@@ -97,6 +97,7 @@ class PairGranCapillary : public Pair, public CapillaryBridges {
   int neighprev;
 
   void allocate();
+  void find_liquid();
   // the bridge volume the neighbor reach of a type pair is built for
   double design_volume(int itype, int jtype) const;
   int counted(int i, int j) const;
@@ -122,11 +123,17 @@ class PairGranCapillary : public Pair, public CapillaryBridges {
                   double *history, int &touch, int history_update);
   void check_periodic_images();
   void check_timestep();
+  void reduce_timestep_ranges();
+  double capillary_stiffness(int i, int j, const double *volumes) const;
   void radius_ranges();
   double max_rupture(int itype, int jtype, double vol) const;
   double pair_cutoff(int itype, int jtype);
   double *find_history(int i, int j, double *negate);
   void parse_coeff(int ilo, int ihi, int jlo, int jhi, int narg, char **arg);
+  int parse_contact(const std::string &where, int narg, char **arg, TypePair &tp);
+  void parse_law(const std::string &where, int iarg, int narg, char **arg, cb_law &one,
+                 std::string &spec, double &volume_one);
+  int prepared_law(const std::string &where, const cb_law &one, const std::string &spec);
 };
 
 }    // namespace LAMMPS_NS
