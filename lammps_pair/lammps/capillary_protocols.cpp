@@ -66,24 +66,31 @@ struct FixCapillaryLiquid::Protocol1Pairs {
   const cb_law *law = nullptr;
 };
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   phase 1's per-atom arrays (owned + ghost), grown with atom->nmax
+------------------------------------------------------------------------- */
 
 void FixCapillaryLiquid::grow_scratch()
 {
   if (atom->nmax <= nmax_scratch) return;
   nmax_scratch = atom->nmax;
-  memory->destroy(candidates);
-  memory->destroy(released);
-  memory->destroy(offer);
-  memory->destroy(deposit);
-  memory->destroy(best_height);
-  memory->destroy(best_partner);
+  destroy_scratch();
   memory->create(candidates, nmax_scratch, "capillary/liquid:candidates");
   memory->create(released, nmax_scratch, "capillary/liquid:released");
   memory->create(offer, nmax_scratch, "capillary/liquid:offer");
   memory->create(deposit, nmax_scratch, "capillary/liquid:deposit");
   memory->create(best_height, nmax_scratch, "capillary/liquid:best_height");
   memory->create(best_partner, nmax_scratch, "capillary/liquid:best_partner");
+}
+
+void FixCapillaryLiquid::destroy_scratch()
+{
+  memory->destroy(candidates);
+  memory->destroy(released);
+  memory->destroy(offer);
+  memory->destroy(deposit);
+  memory->destroy(best_height);
+  memory->destroy(best_partner);
 }
 
 /* ----------------------------------------------------------------------

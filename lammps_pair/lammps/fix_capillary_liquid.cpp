@@ -225,12 +225,7 @@ FixCapillaryLiquid::~FixCapillaryLiquid()
     atom->delete_callback(id, Atom::RESTART);
   }
   memory->destroy(free_liquid);
-  memory->destroy(candidates);
-  memory->destroy(released);
-  memory->destroy(offer);
-  memory->destroy(deposit);
-  memory->destroy(best_height);
-  memory->destroy(best_partner);
+  destroy_scratch();
 }
 
 /* ---------------------------------------------------------------------- */

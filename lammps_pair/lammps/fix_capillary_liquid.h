@@ -113,6 +113,7 @@ class FixCapillaryLiquid : public Fix {
 
   // capillary_protocols.cpp
   void grow_scratch();
+  void destroy_scratch();
   void update_bridges();
   void advance_and_release(int i, int j, double rsq, double gap, cb_bridge *bridge);
   void receive_at(int i, int j, double delz, double r);

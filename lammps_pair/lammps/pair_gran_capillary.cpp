@@ -564,7 +564,10 @@ int PairGranCapillary::counted(int i, int j) const
 
 int PairGranCapillary::wet_pair(int i, int j, const TypePair &tp) const
 {
-  return wet(tp, atom->mask, liquid_groupbit, i, j);    // (liquid_groupbit 0: no fix)
+  // the atoms' masks read only with a fix (liquid_groupbit 0: none): this runs for every
+  // pair in contact without a bridge
+  if (tp.volume == 0.0) return 0;
+  return !liquid_groupbit || wet(tp, atom->mask, liquid_groupbit, i, j);
 }
 
 // two atoms at distance 0 have no contact normal: stop before their NaN force is applied
