@@ -357,7 +357,7 @@ template <bool BRIDGES> void PairGranCapillary::form_bridges_and_forces()
 }
 
 /* ----------------------------------------------------------------------
-   Protocols 2, 3: the bridges were advanced in update_bridges(); here a dry pair in
+   Protocols 2, 3: the bridges were advanced by the fix (offer_liquid); here a dry pair in
    contact forms one with the liquid on offer, a bridge takes its Protocol 3 deposit, and
    the capillary force is returned
 ------------------------------------------------------------------------- */
