@@ -421,32 +421,87 @@ static cb_status stiffness_at(const cb_law *law, double r1, double r2, double vo
     return status;
 }
 
+/* |dF/dgap| at the edge of the gaps where a law has a bridge, between t_in (a bridge) and
+ * t_out (none), found by bisection: the strict Weigert law has none where its arcsin
+ * argument passes 1, and its force falls steepest into that edge. */
+static cb_status edge_stiffness(const cb_law *law, double r1, double r2, double volume,
+                                double rupture, double t_in, double t_out, double *magnitude)
+{
+    for (int k = 0; k < 64; ++k) {
+        double mid = 0.5 * (t_in + t_out), f = 0.0, df = 0.0;
+        cb_status status = cb_force(law, r1, r2, volume, rupture * mid * mid, &f, &df);
+        if (status == CB_ERR_NO_BRIDGE) t_out = mid;
+        else if (status == CB_OK) t_in = mid;
+        else return status;
+    }
+    return stiffness_at(law, r1, r2, volume, rupture, t_in, magnitude);
+}
+
+/* The bound's sample points in t = sqrt(gap / rupture), ascending: 0, then 8^-k down the
+ * whole double range (a law's steepest point can sit at a gap many decades below the
+ * rupture distance far outside its validity: Willett's at V/R^3 = 1e300, the fuzzer found),
+ * then i / BOUND_UNIFORM, clustered towards contact in the gap. */
+enum { BOUND_GEOMETRIC = 170, BOUND_UNIFORM = 128 };
+enum { BOUND_SAMPLES = 1 + BOUND_GEOMETRIC + BOUND_UNIFORM };
+
+static double bound_sample(int i)
+{
+    if (i == 0) return 0.0;
+    if (i <= BOUND_GEOMETRIC) return ldexp(1.0, -3 * (BOUND_GEOMETRIC + 3 - i));
+    return (double)(i - BOUND_GEOMETRIC) / BOUND_UNIFORM;
+}
+
 cb_status cb_capillary_stiffness_bound(const cb_law *law, double r1, double r2, double volume,
                                        double *stiffness)
 {
-    /* The laws' dF/dgap is smooth on [0, rupture]; its largest magnitude is sampled on
-     * points clustered towards contact, where the exponential-like laws are steepest.
-     * Some laws (Willett's two, Weigert) are steepest at an interior gap, which the samples
-     * can miss by ~1%: the best sample's bracket is then refined by golden section. */
-    enum { SAMPLES = 128, REFINE = 60 };
+    /* The closed-form laws' dF/dgap is smooth where they have a bridge; its largest
+     * magnitude is sampled (bound_sample). Some laws (Willett's two, Weigert) are steepest at an
+     * interior gap, which the samples can miss by ~1%: the best sample's bracket is then
+     * refined by golden section, an edge of the gaps with a bridge (Weigert's) by
+     * bisection, and the result raised by 1e-9 for the rounding of the maximum between the
+     * points evaluated. */
+    enum { REFINE = 60 };
     if (!stiffness) return CB_ERR_NULL;
     double rupture = 0.0;
     cb_status status = cb_rupture_distance(law, r1, r2, volume, &rupture);
     if (status != CB_OK) return status;
+    if (law->model == CB_MODEL_TABLE) {
+        /* from the interpolant, cell by cell (law_table.c): its steepest point, in the half
+         * cell before the fold, falls between any samples of the gap */
+        cb_pair pair = cb_pair_make(law, r1, r2, volume);
+        double bound = cb_table_stiffness_bound(law, &pair);
+        if (!isfinite(bound)) return CB_ERR_RANGE;
+        *stiffness = bound;
+        return CB_OK;
+    }
     double largest = 0.0;
     int best = 0;
-    for (int i = 0; i <= SAMPLES; ++i) {
-        double magnitude = 0.0;
-        status = stiffness_at(law, r1, r2, volume, rupture, (double)i / SAMPLES, &magnitude);
-        if (status != CB_OK) return status;
+    int had_bridge = 0;
+    for (int i = 0; i < BOUND_SAMPLES; ++i) {
+        double magnitude = 0.0, f = 0.0;
+        status = cb_force(law, r1, r2, volume, rupture * bound_sample(i) * bound_sample(i), &f,
+                          &magnitude);
+        int has_bridge = status != CB_ERR_NO_BRIDGE;
+        if (!has_bridge) magnitude = 0.0;
+        else if (status != CB_OK) return status;
+        magnitude = fabs(magnitude);
         if (magnitude > largest) {
             largest = magnitude;
             best = i;
         }
+        if (i > 0 && has_bridge != had_bridge) {
+            double edge = 0.0;
+            status = edge_stiffness(law, r1, r2, volume, rupture,
+                                    bound_sample(has_bridge ? i : i - 1),
+                                    bound_sample(has_bridge ? i - 1 : i), &edge);
+            if (status != CB_OK) return status;
+            largest = fmax(largest, edge);
+        }
+        had_bridge = has_bridge;
     }
     const double golden = 0.61803398874989485;
-    double lo = (best > 0 ? best - 1 : 0) / (double)SAMPLES;
-    double hi = (best < SAMPLES ? best + 1 : SAMPLES) / (double)SAMPLES;
+    double lo = bound_sample(best > 0 ? best - 1 : 0);
+    double hi = bound_sample(best < BOUND_SAMPLES - 1 ? best + 1 : BOUND_SAMPLES - 1);
     double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo), fa = 0.0, fb = 0.0;
     if ((status = stiffness_at(law, r1, r2, volume, rupture, a, &fa)) != CB_OK) return status;
     if ((status = stiffness_at(law, r1, r2, volume, rupture, b, &fb)) != CB_OK) return status;
@@ -470,6 +525,6 @@ cb_status cb_capillary_stiffness_bound(const cb_law *law, double r1, double r2, 
     }
     if (fa > largest) largest = fa;
     if (fb > largest) largest = fb;
-    *stiffness = largest;
+    *stiffness = largest * (1.0 + 1e-9);
     return CB_OK;
 }

@@ -2,21 +2,28 @@
  *
  * At preparation the table is built from the exact solver for the law's contact angle,
  * over the size ratio through q = sqrt(1 - R_small/R_large) (uniform in q, for s =
- * R_small/R_large in [0.1, 1]; above about 30 degrees the rupture distance of nearly
- * equal spheres has a square-root cusp at s = 1, where the symmetric bridge becomes
- * unstable to liquid shifting to one sphere, and in q it is smooth), the scaled volume
- * v = V/R_h^3 (uniform in ln v, nodes reaching a quarter decade beyond the domain
- * [1e-5, 1e-1] so that its edges get centred stencils), and the gap through
+ * R_small/R_large in [0.1, 1]; near s = 1 the rupture distance and the force near the
+ * fold change over a narrow range of s, where the symmetric bridge becomes unstable to
+ * liquid shifting to one sphere (above about 30 degrees, and lower at the largest volumes;
+ * the rupture distance falls there like (1 - s)^(2/3)): q spreads that range out, and 22
+ * steps in q resolve it), the scaled volume v = V/R_h^3 (uniform in ln v, nodes reaching
+ * a quarter decade beyond the domain [1e-5, 1e-1] so that its edges get centred
+ * stencils), and the gap through
  *     w = sqrt(1 - sqrt(gap / rupture))  in [0, 1]  (w = 1 at contact, 0 at the fold),
  * i.e. gap = rupture (1 - w^2)^2. Why w and not gap/rupture: the force has two
  * narrow features, a steep fall over gaps of order sqrt(V/R) near contact (Willett's
  * S+ scale, a small fraction of the rupture distance for small V) and a square-root
  * singularity at the fold, F ~ F* + c sqrt(rupture - gap). In w both are smooth and
  * spread out (gap ~ (1 - w)^2 near contact, sqrt(rupture - gap) ~ w near the fold).
- * Stored: the rupture distance rupture/R_h at each (s, v), and F/(2 pi gamma R_h) with its
- * w-slopes at each (s, v, w). Interpolation: cubic Lagrange in s and ln v (4-point
- * stencils), monotone cubic Hermite in w (Fritsch-Carlson slopes), so that along the gap
- * the force never rises where the exact one does not.
+ * Stored: rupture/(R_h v^(1/3)) at each (s, v), the rupture distance without its V^(1/3)
+ * growth (Lian's scaling), which a cubic in ln v follows only to 1e-4; and F/(2 pi gamma
+ * R_h) with its w-slopes at each (s, v, w). Interpolation: cubic Lagrange in q and ln v
+ * (4-point stencils), monotone cubic Hermite in w (Fritsch-Carlson slopes), so that along
+ * the gap the force never rises where the exact one does not.
+ * The fold needs the rupture distance to ~1e-5: within 1e-4 of it the exact force rises as
+ * a square root of the distance to its fold, so an error e of the table's rupture distance
+ * is a force error of up to ~1.6 sqrt(e) there (1.2 % at the 1.1e-4 of 12 steps in q and
+ * an unscaled rupture distance).
  * Outside the table (validity extend): s and v are clamped for the scaled force, and the
  * rupture distance is extended with the V^(1/3) scaling of Lian's rule from the edge. */
 #include "laws.h"
@@ -27,16 +34,23 @@
 
 /* The grid. Node positions are given together with the reciprocal steps the lookup
  * multiplies by, since a division on every call would cost more than the interpolation:
- *   size ratio: q = sqrt(1 - s) at q_i = q_max i / 11, q_max = sqrt(1 - 0.1);
+ *   size ratio: q = sqrt(1 - s) at q_i = q_max i / 22, q_max = sqrt(1 - 0.1);
  *   volume:     ln v at ln v_j = ln(10^-5.25) + j ln(10)/4 (four per decade, 10^-0.75 last). */
-enum { TABLE_RATIOS = 12, TABLE_VOLUMES = 19, TABLE_GAPS = 33 };
+enum { TABLE_RATIOS = 23, TABLE_VOLUMES = 19, TABLE_GAPS = 33 };
 static const double table_ratio_min = 0.1;      /* s = R_small / R_large */
-static const double table_ratio_nodes_per_q = 11.595018087284059; /* 11 / sqrt(0.9) */
+static const double table_ratio_nodes_per_q = 23.190036174568118; /* 22 / sqrt(0.9) */
 static const double table_volume_min = 1e-5;    /* the domain in V / R_h^3 */
 static const double table_volume_max = 1e-1;
+static const double table_log_volume_min = -11.512925464970229; /* ln 1e-5 */
+static const double table_log_volume_max = -2.3025850929940455; /* ln 1e-1 */
 static const double table_log_volume_first = -12.088571738218741; /* -5.25 ln 10 */
 static const double table_log_volume_step = 0.5756462732485115;   /* ln(10) / 4 */
 static const double table_volume_nodes_per_log = 1.737177927613007; /* 4 / ln 10 */
+
+/* Integration steps of the exact solver for the nodes: half its default, within 1e-7 of
+ * it in the rupture distance and 3e-8 in the force (against 1024 steps) at half the cost,
+ * which pays for the 22 steps in q. */
+static const int table_solver_steps = CB_EXACT_DEFAULT_STEPS / 2;
 
 /* A force value and its w-slope as one two-lane vector (GCC and Clang vector extension;
  * SSE2 on x86-64, NEON on arm64, scalar code elsewhere): the lookup sums both with the
@@ -45,7 +59,7 @@ typedef double force_slope __attribute__((vector_size(2 * sizeof(double))));
 
 struct cb_table {
     double contact_angle;
-    double rupture[TABLE_RATIOS][TABLE_VOLUMES];              /* rupture / R_h */
+    double rupture[TABLE_RATIOS][TABLE_VOLUMES]; /* rupture / (R_h v^(1/3)) */
     /* F / (2 pi gamma R_h) and its w-slope, for each gap node the (s, v) plane */
     force_slope force[TABLE_GAPS][TABLE_RATIOS][TABLE_VOLUMES];
 };
@@ -74,12 +88,17 @@ static double gap_coordinate(double fraction) { return sqrt(1.0 - sqrt(fraction)
 
 /* Fritsch-Carlson slopes of a sequence increasing or decreasing in w: a cubic Hermite
  * with these slopes is monotone wherever the data are. At contact (w = 1) the slope is
- * the exact one, 0, since gap ~ (1 - w)^2 there. */
+ * the exact one, 0, since gap ~ (1 - w)^2 there. At the fold (w = 0) it is the slope of
+ * the parabola through the first three nodes, kept to the sign of the first difference:
+ * where the symmetric bridge of nearly equal spheres ruptures by instability (above about
+ * 30 degrees) the exact force has no square root there, F ~ F* + b w^2, and the first
+ * difference as the slope put the force of the last cell up to 0.6 % off. */
 static void monotone_slopes(const double *y, double h, double *m)
 {
     double d[TABLE_GAPS - 1];
     for (int k = 0; k < TABLE_GAPS - 1; ++k) d[k] = (y[k + 1] - y[k]) / h;
-    m[0] = d[0];
+    m[0] = 0.5 * (3.0 * d[0] - d[1]);
+    if (m[0] * d[0] <= 0.0) m[0] = 0.0;
     m[TABLE_GAPS - 1] = 0.0;
     for (int k = 1; k < TABLE_GAPS - 1; ++k) {
         if (d[k - 1] * d[k] <= 0.0) m[k] = 0.0;
@@ -105,7 +124,8 @@ static cb_status fill_node(struct cb_table *table, int i, int j, cb_message *msg
     double s = ratio_node(i), v = exp(log_volume_node(j));
     double r_small = 1.0, r_large = 1.0 / s;
     double rh = cb_radius_harmonic(r_small, r_large);
-    cb_exact_problem problem = {r_small, r_large, table->contact_angle, 1.0, v * rh * rh * rh, 0};
+    cb_exact_problem problem = {r_small, r_large, table->contact_angle, 1.0, v * rh * rh * rh,
+                                table_solver_steps};
     double rupture = 0.0;
     cb_exact_bridge bridges[TABLE_GAPS];
     cb_status status = cb_exact_rupture(&problem, &rupture, &bridges[TABLE_GAPS - 1]);
@@ -123,7 +143,7 @@ static cb_status fill_node(struct cb_table *table, int i, int j, cb_message *msg
                        "theta = %g degrees: %s",
                        1.0 / s, v, table->contact_angle * 180.0 / CB_PI,
                        cb_status_message(status));
-    table->rupture[i][j] = rupture / rh;
+    table->rupture[i][j] = rupture / (rh * cbrt(v));
     double f[TABLE_GAPS], m[TABLE_GAPS];
     for (int k = 0; k < TABLE_GAPS - 1; ++k)
         f[TABLE_GAPS - 1 - k] = bridges[k].force / (2.0 * CB_PI * rh);
@@ -174,10 +194,10 @@ static int lagrange_stencil(double x, int n, double w[4])
     return first;
 }
 
-/* rupture / R_h where the pair sits; beyond the table extended with the V^(1/3)
- * scaling of Lian's rule. */
+/* rupture / R_h where the pair sits: the tabulated rupture / (R_h v^(1/3)) times v^(1/3)
+ * (beyond the table's volumes, the edge value times v^(1/3): Lian's V^(1/3) scaling). */
 static double scaled_rupture(const struct cb_table *t, const cb_table_position *p,
-                             double volume_excess)
+                             double cube_root_volume)
 {
     double row_sum[4];
     for (int a = 0; a < 4; ++a) {
@@ -185,8 +205,7 @@ static double scaled_rupture(const struct cb_table *t, const cb_table_position *
         const double *wt = p->weight[a];
         row_sum[a] = (wt[0] * row[0] + wt[1] * row[1]) + (wt[2] * row[2] + wt[3] * row[3]);
     }
-    double sum = (row_sum[0] + row_sum[1]) + (row_sum[2] + row_sum[3]);
-    return volume_excess == 1.0 ? sum : sum * cbrt(volume_excess);
+    return ((row_sum[0] + row_sum[1]) + (row_sum[2] + row_sum[3])) * cube_root_volume;
 }
 
 /* Where the pair sits in the table: the 4 x 4 stencil in (q, ln v), its weights as
@@ -200,17 +219,18 @@ void cb_table_locate(const cb_law *law, cb_pair *pair)
      * divisions, square roots and the logarithm) */
     double inverse_rh = (pair->r1 + pair->r2) / (2.0 * pair->r1 * pair->r2);
     double v = pair->volume * (inverse_rh * inverse_rh * inverse_rh);
-    double clamped = v < table_volume_min ? table_volume_min
-                     : v > table_volume_max ? table_volume_max
-                                            : v;
+    double log_volume = log(v);
+    double clamped = log_volume < table_log_volume_min   ? table_log_volume_min
+                     : log_volume > table_log_volume_max ? table_log_volume_max
+                                                         : log_volume;
     double x_ratio = sqrt(1.0 - pair->r_small / pair->r_large) * table_ratio_nodes_per_q;
-    double x_volume = (log(clamped) - table_log_volume_first) * table_volume_nodes_per_log;
+    double x_volume = (clamped - table_log_volume_first) * table_volume_nodes_per_log;
     double ratio_weight[4], volume_weight[4];
     p->ratio_first = lagrange_stencil(x_ratio, TABLE_RATIOS, ratio_weight);
     p->volume_first = lagrange_stencil(x_volume, TABLE_VOLUMES, volume_weight);
     for (int a = 0; a < 4; ++a)
         for (int b = 0; b < 4; ++b) p->weight[a][b] = ratio_weight[a] * volume_weight[b];
-    p->scaled_rupture = scaled_rupture(law->table, p, v == clamped ? 1.0 : v / clamped);
+    p->scaled_rupture = scaled_rupture(law->table, p, exp(log_volume * (1.0 / 3.0)));
 }
 
 double cb_table_rupture(const cb_law *law, const cb_pair *pair)
@@ -326,7 +346,98 @@ cb_status cb_table_force(const cb_law *law, const cb_pair *pair, double gap, dou
     return CB_OK;
 }
 
-/* The table's range, where tests/test_table.c holds it to 0.5 % of the exact solver.
+/* |dF/dw| / (scale / h) on a Hermite cell, as a quadratic in x = (w - w0) / h: the
+ * derivative of hermite_value's cubic, collected by powers of x. */
+typedef struct slope_quadratic {
+    double c0, c1, c2;
+} slope_quadratic;
+
+static slope_quadratic slope_of(const hermite_cell *c)
+{
+    double d = c->f1 - c->f0, hm0 = c->h * c->m0, hm1 = c->h * c->m1;
+    slope_quadratic q = {hm0, 6.0 * d - 4.0 * hm0 - 2.0 * hm1, -6.0 * d + 3.0 * (hm0 + hm1)};
+    return q;
+}
+
+static double slope_at(const slope_quadratic *q, double x)
+{
+    return q->c0 + x * (q->c1 + x * q->c2);
+}
+
+/* The largest |slope| over [xa, xb]: at an end or at the vertex. */
+static double slope_max(const slope_quadratic *q, double xa, double xb)
+{
+    double m = fmax(fabs(slope_at(q, xa)), fabs(slope_at(q, xb)));
+    if (q->c2 != 0.0) {
+        double vertex = -q->c1 / (2.0 * q->c2);
+        if (vertex > xa && vertex < xb) m = fmax(m, fabs(slope_at(q, vertex)));
+    }
+    return m;
+}
+
+/* w (1 - w^2), to which dgap/dw is proportional: concave on [0, 1], so its least value
+ * over an interval is at an end. */
+static double gap_rate(double w) { return w * (1.0 - w * w); }
+
+/* An upper bound of |dF/dgap| over 0 <= gap <= rupture, derived from the interpolant
+ * rather than sampled (the steepest point lies in the half cell before the fold, where
+ * samples of the gap rarely fall). cb_table_force's stiffness at any gap is
+ *     |H'(u)| scale / (4 rupture u (1 - u^2)),  u = w clamped into [h/2, 1 - h/2],
+ * H the Hermite cubic of u's cell (0 where the force is clamped or held). On an interval
+ * of a cell, max|H'| (a quadratic: ends or vertex) over the least u (1 - u^2) (an end)
+ * bounds it; intervals are halved until that bound is within 1e-3 of the largest
+ * stiffness found at their points, or is below it. The result is multiplied by
+ * 1 + 1e-9 for the rounding of cb_table_force's own evaluation. */
+double cb_table_stiffness_bound(const cb_law *law, const cb_pair *pair)
+{
+    enum { CELLS = TABLE_GAPS - 1, STACK = 64, DEPTH = 40 };
+    const double h = 1.0 / CELLS, half = 0.5 * h, tolerance = 1e-3;
+    slope_quadratic slopes[CELLS];
+    double lower = 0.0; /* the largest |H'| / rate found at a point */
+    for (int k = 0; k < CELLS; ++k) {
+        hermite_cell c = cell_at(law->table, &pair->table, k * h);
+        slopes[k] = slope_of(&c);
+        for (int i = 0; i <= 4; ++i) {
+            double u = fmin(fmax((k + 0.25 * i) * h, half), 1.0 - half);
+            lower = fmax(lower, fabs(slope_at(&slopes[k], (u - k * h) * CELLS)) / gap_rate(u));
+        }
+    }
+    double upper = lower;
+    for (int k = 0; k < CELLS; ++k) {
+        struct { double a, b; int depth; } stack[STACK];
+        int n = 0;
+        stack[n].a = fmax(k * h, half);
+        stack[n].b = fmin((k + 1) * h, 1.0 - half);
+        stack[n++].depth = 0;
+        while (n > 0) {
+            --n;
+            double a = stack[n].a, b = stack[n].b;
+            int depth = stack[n].depth;
+            double xa = (a - k * h) * CELLS, xb = (b - k * h) * CELLS, mid = 0.5 * (a + b);
+            double bound = slope_max(&slopes[k], xa, xb) / fmin(gap_rate(a), gap_rate(b));
+            lower = fmax(lower, fabs(slope_at(&slopes[k], 0.5 * (xa + xb))) / gap_rate(mid));
+            if (bound <= lower * (1.0 + tolerance) || depth == DEPTH || n + 2 > STACK) {
+                upper = fmax(upper, bound);
+                continue;
+            }
+            stack[n].a = a;
+            stack[n].b = mid;
+            stack[n++].depth = depth + 1;
+            stack[n].a = mid;
+            stack[n].b = b;
+            stack[n++].depth = depth + 1;
+        }
+    }
+    double rupture = pair->table.scaled_rupture * pair->r_harmonic;
+    double scale = 2.0 * CB_PI * law->surface_tension * pair->r_harmonic;
+    return upper * CELLS * scale / (4.0 * rupture) * (1.0 + 1e-9);
+}
+
+/* The table's range, where tests/test_table.c holds it to the exact solver: the rupture
+ * distance within 2e-4 (relative; 1e-4 at most found), the force within 0.5 % at every gap
+ * up to (1 - 1e-4) of the smaller of the two rupture distances, and within 1 % from there
+ * to it (the exact force's square root at its fold magnifies the rupture distance's error).
+ * Between the two rupture distances one bridge has ruptured and the other not.
  * Above about 70 degrees the exact force near contact is small and no longer falls
  * monotonically with the gap, which the monotone interpolant does not follow. */
 cb_validity cb_table_validity(const cb_law *law)

@@ -89,6 +89,8 @@ double cb_table_contact_angle(const struct cb_table *table);
 void cb_table_locate(const cb_law *law, cb_pair *pair);
 double cb_table_rupture(const cb_law *law, const cb_pair *pair);
 double cb_table_rupture_volume(const cb_law *law, const cb_pair *pair, double gap);
+/* An upper bound of |dF/dgap| of cb_table_force over 0 <= gap <= the table's rupture. */
+double cb_table_stiffness_bound(const cb_law *law, const cb_pair *pair);
 
 /* Write a formatted message if msg is not NULL; returns status for chaining. */
 cb_status cb_fail(cb_message *msg, cb_status status, const char *format, ...)
