@@ -131,6 +131,35 @@ class WordSetting : public Setting {
     bool *given_target_;
 };
 
+/* A keyword the model no longer takes: given (with or without a value), it is an error with
+ * `why`, the complete message (what it did, what happens now). */
+class RemovedSetting : public Setting {
+  public:
+    RemovedSetting(const std::string &keyword, const std::string &why)
+        : Setting(keyword, 1), why_(why)
+    {
+    }
+    virtual ~RemovedSetting() {}
+    int parseArguments(char **args)
+    {
+        if (name != args[0]) return 0;
+        error_message = why_;
+        return -1;
+    }
+    void print_value(FILE *out) { fprintf(out, "(removed)"); }
+
+  private:
+    std::string why_;
+};
+
+inline void register_removed(Settings &settings, const std::string &keyword,
+                             const std::string &why)
+{
+    SettingMap &map = settings_map(settings);
+    if (map.find(keyword) == map.end())
+        map[keyword] = new RemovedSetting(keyword, why); /* owned (deleted) by Settings */
+}
+
 /* Register `keyword` (default value `initial`) in `settings`, bound to `target`;
  * *given (may be NULL) tells whether the keyword appeared; `input` is LIGGGHTS's command
  * reader (the end of the command). */

@@ -9,8 +9,7 @@
    the core's static library (libcapbridge.a).
 
      pair_style gran model hertz tangential history cohesion capillary law willett &
-                rupture default overlap contact validity extend liquid fixed &
-                capillary_friction on tally off
+                rupture default overlap contact validity extend liquid fixed tally off
 
    What lives where:
      - the force, the rupture distance, the bridge transitions (form / hold / rupture)
@@ -118,7 +117,6 @@ namespace ContactModels {
       history_offset_(-1),
       law_given_(false),
       c_given_(false),
-      capillary_friction_(true),
       tally_(false),
       protocol2_(false),
       model_(CB_MODEL_WILLETT),
@@ -167,15 +165,19 @@ namespace ContactModels {
       register_word(settings, "liquid", "fixed", &check_liquid, liquid_, NULL, input);
       // on/off as words: LIGGGHTS's own on/off reader reads past the end of the command
       // when the keyword is its last word (std::string from NULL: SIGABRT)
-      register_word(settings, "capillary_friction", "on", &check_on_off, capillary_friction_word_,
-                    NULL, input);
       register_word(settings, "tally", "off", &check_on_off, tally_word_, NULL, input);
+      register_removed(settings, "capillary_friction",
+                       "cohesion model capillary: keyword 'capillary_friction' was removed: the "
+                       "Coulomb limit of the tangential model is always mu |f_n^e + f_n^d|, the "
+                       "normal model's contact force alone (Richefeu 2007 eq. 12 with the f_n "
+                       "of his eq. 1); the former default 'capillary_friction on' added the "
+                       "capillary attraction to it, counting it twice, and 'capillary_friction "
+                       "off' is what every run now does: delete the keyword");
     }
 
     inline void postSettings(IContactHistorySetup *, ContactModelBase *)
     {
       protocol2_ = (liquid_ == "protocol2");
-      capillary_friction_ = (capillary_friction_word_ == "on");
       tally_ = (tally_word_ == "on");
       if (wall_) return;
       if (law_given_) {
@@ -276,12 +278,10 @@ namespace ContactModels {
       if (wall_) return;
       const double gap = sidata.r - sidata.radsum;
       const double capillary = pair_force(sidata, gap, sidata.en);
-      if (capillary > 0.0) {
-        apply(capillary, sidata.en, i_forces, j_forces);
-        // Richefeu 2007 eq. 12: Coulomb limit mu (f_n - f_n^c), f_n^c = -force.
-        // The tangential model (called after the cohesion model) reads |sidata.Fn|.
-        if (capillary_friction_) sidata.Fn += capillary;
-      }
+      // sidata.Fn is left as the normal model set it, f_n^e + f_n^d: the tangential model
+      // (called after this one) limits its force by mu |sidata.Fn|, Richefeu 2007 eq. 12
+      // mu (f_n - f_n^c) with eq. 1's f_n = f_n^e + f_n^d + f_n^c: the contact force alone
+      if (capillary > 0.0) apply(capillary, sidata.en, i_forces, j_forces);
     }
 
     void surfacesClose(SurfacesCloseData & scdata, ForceData & i_forces, ForceData & j_forces)
@@ -739,8 +739,8 @@ namespace ContactModels {
     int history_offset_;
     std::string law_name_, rupture_, overlap_, validity_, richefeu_c_, liquid_;
     bool law_given_, c_given_;
-    std::string capillary_friction_word_, tally_word_;  // on/off
-    bool capillary_friction_, tally_;
+    std::string tally_word_;  // on/off
+    bool tally_;
     bool protocol2_;
     cb_model model_;
     // properties

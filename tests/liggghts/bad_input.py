@@ -66,8 +66,10 @@ CASES = [
     # on/off keywords as the last word: LIGGGHTS's own on/off reader aborted (SIGABRT)
     ("tally as the last word", ALL, "capillary law willett tally", "off",
      ["keyword 'tally' needs a value", "allowed: on, off"]),
+    # removed (it counted the attraction twice in the Coulomb limit): refused also without a
+    # value (friction.py: with each value)
     ("capillary_friction as the last word", ALL, "capillary law willett capillary_friction",
-     "off", ["keyword 'capillary_friction' needs a value", "allowed: on, off"]),
+     "off", ["keyword 'capillary_friction' was removed", "delete the keyword"]),
     ("tally with another word", ALL, "capillary law willett tally yes", "off",
      ["tally 'yes'", "allowed: on, off"]),
     ("a keyword given twice", ALL, "capillary law willett law richefeu", "off",

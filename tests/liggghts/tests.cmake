@@ -28,10 +28,15 @@ add_test(NAME liggghts_wet
 add_test(NAME liggghts_bad_input
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/bad_input.py ${CAPBRIDGE_LIGGGHTS_ENV}
                  --workdir ${_liggghts_work}/bad_input)
-# the Coulomb limit with and without the capillary attraction (Richefeu eq. 12)
+# the Coulomb limit on the contact force (Richefeu eq. 12); capillary_friction refused
 add_test(NAME liggghts_friction
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/friction.py ${CAPBRIDGE_LIGGGHTS_ENV}
                  --workdir ${_liggghts_work}/friction)
+# a pair held by its bridge alone slides at mu F_cap (eq. 12 with eq. 1's f_n), F_cap from the CLI
+add_test(NAME liggghts_held
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/held.py
+                 $<TARGET_FILE:capbridge_cli> ${CAPBRIDGE_LIGGGHTS_ENV}
+                 --workdir ${_liggghts_work}/held)
 # easo/capillary/viscous and ours against the exact curves; easo = our soulie at theta 0
 # (the full table of the docs: easo_comparison.py with all laws, see its --output)
 add_test(NAME liggghts_easo_comparison
@@ -60,7 +65,7 @@ add_test(NAME liggghts_timestep
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/timestep.py ${CAPBRIDGE_LIGGGHTS_ENV}
                  --workdir ${_liggghts_work}/timestep)
 set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts_bad_input
-                     liggghts_friction liggghts_easo_comparison liggghts_between_runs
+                     liggghts_friction liggghts_held liggghts_easo_comparison liggghts_between_runs
                      liggghts_restart liggghts_restart_mpi liggghts_liquid_account
                      liggghts_timestep
                      PROPERTIES LABELS "liggghts" TIMEOUT 600)
