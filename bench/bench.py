@@ -437,8 +437,9 @@ def assemble():
 def compare(ctx, a, b, side):
     """Two builds of the LAMMPS plugin against each other on one side of part 1's scene, by
     part 1's method (engines.beside, the launch order alternating); a may be "stock",
-    LAMMPS's own dry style.  Prints B's CPU time over A's per repeat: a developer's tool for
-    a change to the hot path.  Run A against A first: its spread bounds what a comparison
+    LAMMPS's own dry style.  Prints B's CPU time over A's per repeat, then B's instructions
+    over A's (callgrind, as part 1 counts them): a developer's tool for a change to the hot
+    path.  Run A against A first: its spread bounds what a comparison
     can resolve."""
     data = base_packing(ctx)
     copies = part1_copies(ctx)
@@ -458,6 +459,14 @@ def compare(ctx, a, b, side):
         ta, tb = loops["A"].cpu_seconds(), loops["B"].cpu_seconds()
         print(f"repeat {r + 1}: B/A CPU time {tb / ta:.3f} ({tb:.2f} s / {ta:.2f} s)",
               flush=True)
+    # the instruction counts of part 1's method (callgrind, the base packing): the same on a
+    # busy machine, where the CPU times above carry a few per cent from repeat to repeat
+    sides = {label: ({"side": "stock"} if build == "stock"
+                     else {"side": side, "plugin": build}) for label, build in builds.items()}
+    counts, steps = instructions(ctx, sides, data, work)
+    (ta, pa), (tb, pb) = counts["A"], counts["B"]
+    print(f"instructions ({steps} steps of the base packing): B/A {tb / ta:.4f} in all, "
+          f"{pb / pa:.4f} in the pair style's compute", flush=True)
 
 
 def main():
