@@ -80,8 +80,12 @@ typedef struct pulloff {
     const cb_law *law;
     double r1, r2, volume, radsum;
     cb_contact_law contact; /* Richefeu eqs. 2-3, the core's (as the engines') */
-    double sqrt_mass;       /* sqrt of the effective mass m1 m2 / (m1 + m2) */
-    double velocity;  /* of sphere 2 */
+    double m1, m2, mass;    /* the spheres' masses and the effective mass m1 m2 / (m1 + m2) */
+    double sqrt_mass;       /* sqrt of the effective mass */
+    double velocity;        /* of sphere 2 */
+    double rupture;         /* the rupture distance of the bridge */
+    double dt;
+    long max_steps, after, every;
 } pulloff;
 
 /* The state after a force evaluation. */
@@ -123,6 +127,124 @@ static void print_row(long step, double time, double x1, double v1, double x2,
     printf("%d\n", (int)row[7]);
 }
 
+/* The run's constants from the options: masses, contact law, rupture distance, time step
+ * (with a warning when it is too large for the stiffer of k_n and the capillary stiffness)
+ * and the step counts.  Returns 0, or the exit code of an error it has reported. */
+static int pulloff_setup(const char *name, const cli_option *options, const cb_law *law,
+                         pulloff *p)
+{
+    p->law = law;
+    p->r1 = options[R1].number;
+    p->r2 = options[R2].number;
+    p->volume = options[VOLUME].number;
+    p->radsum = p->r1 + p->r2;
+    p->velocity = options[VELOCITY].number;
+    const double density = options[DENSITY].number;
+    p->m1 = 4.0 * CB_PI / 3.0 * p->r1 * p->r1 * p->r1 * density;
+    p->m2 = 4.0 * CB_PI / 3.0 * p->r2 * p->r2 * p->r2 * density;
+    p->mass = p->m1 * p->m2 / (p->m1 + p->m2);
+    p->sqrt_mass = sqrt(p->mass);
+    const double kn = options[KN].number;
+    cb_message msg;
+    if (cb_contact_law_init(&p->contact, kn, 0.0, options[DAMPING].number, 0.0,
+                            CB_DASHPOT_APPROACH, &msg) != CB_OK)
+        return cli_runtime_error(name, "%s", msg.text);
+
+    double capillary_stiffness = 0.0;
+    cb_status status = cb_rupture_distance(law, p->r1, p->r2, p->volume, &p->rupture);
+    if (status == CB_OK)
+        status = cb_capillary_stiffness_bound(law, p->r1, p->r2, p->volume,
+                                              &capillary_stiffness);
+    if (status != CB_OK) return cli_status_error(name, "rupture distance", status);
+    const double m = p->mass;
+    double dt_elastic = 0.02 * CB_PI * sqrt(m / kn);
+    double dt_pull = p->rupture / (p->velocity * 2000.0);
+    double dt = options[DT].given ? options[DT].number : fmin(dt_elastic, dt_pull);
+    double stiffest = fmax(kn, capillary_stiffness);
+    if (dt > 0.1 * CB_PI * sqrt(m / stiffest))
+        fprintf(stderr,
+                "capbridge pulloff: warning: dt = %g s exceeds 10 %% of pi sqrt(m / k) = %g s "
+                "(k = %g N/m, the larger of k_n and the capillary stiffness)\n",
+                dt, CB_PI * sqrt(m / stiffest), stiffest);
+    double pull_steps = ceil(p->rupture / (p->velocity * dt));
+    double max_default = 10.0 * pull_steps + 1000.0 + (double)options[AFTER].integer;
+    if (!options[MAX_STEPS].given && !(max_default <= (double)MAX_STEPS_LIMIT))
+        return cli_usage_error(name, "dt = %g s: the pull reaches the rupture distance (%g m) "
+                               "after %.10g steps; the default --max-steps, 10 x %.10g + 1000 + "
+                               "%ld = %.10g, exceeds " MAX_STEPS_TEXT " (the most allowed): give "
+                               "a larger --dt or --velocity, or --max-steps",
+                               dt, p->rupture, pull_steps, pull_steps, options[AFTER].integer,
+                               max_default);
+    p->dt = dt;
+    p->max_steps = options[MAX_STEPS].given ? options[MAX_STEPS].integer : (long)max_default;
+    p->after = options[AFTER].integer;
+    p->every = options[EVERY].integer;
+    return 0;
+}
+
+static void print_header(int argc, char **argv, const pulloff *p, int dt_given)
+{
+    const cb_law *law = p->law;
+    printf("# capbridge pulloff");
+    for (int i = 1; i < argc; ++i) printf(" %s", argv[i]);
+    printf("\n# law = %s, gamma = %.17g N/m, theta = %.17g deg\n", cb_model_name(law->model),
+           law->surface_tension, law->contact_angle * 180.0 / CB_PI);
+    printf("# m1 = %.17g kg, m2 = %.17g kg, reduced_mass = %.17g kg\n", p->m1, p->m2,
+           p->mass);
+    printf("# kn = %.17g N/m, damping_coefficient = %.17g kg/s, velocity = %.17g m/s\n",
+           p->contact.normal_stiffness, p->contact.damping_factor * p->sqrt_mass, p->velocity);
+    printf("# rupture_distance = %.17g m\n", p->rupture);
+    printf("# dt = %.17g s (%s)\n", p->dt,
+           dt_given ? "given" : "default: min(0.02 pi sqrt(m/k_n), rupture_distance/(2000 v))");
+    puts("step,time,x1,v1,x2,gap,capillary_force,contact_force,bridge");
+}
+
+/* Step 0 and the steps of the step order (the top of the file) until --steps-after-rupture
+ * steps after the first rupture; the rows as it goes.  Returns the exit code. */
+static int run_pulloff(const char *name, const pulloff *p)
+{
+    /* step 0: LAMMPS's setup computes the forces at the initial positions */
+    const double dt = p->dt;
+    const double x2_start = p->radsum;
+    const double dtfm = 0.5 * dt / p->m1; /* fix nve: dtf = 0.5 dt, dtfm = dtf / mass */
+    double x1 = 0.0, v1 = 0.0, x2 = x2_start;
+    cb_bridge bridge = {0};
+    forces f;
+    cb_status status = compute_forces(p, x1, v1, x2, &bridge, &f);
+    if (status != CB_OK) return cli_status_error(name, "step 0", status);
+    if (bridge.active == 0.0)
+        return cli_runtime_error(name, "no bridge formed at contact (cb_bridge_update)");
+    print_row(0, 0.0, x1, v1, x2, &bridge, &f);
+
+    long rupture_step = -1;
+    for (long n = 1;; ++n) {
+        v1 += dtfm * f.f1;                        /* 1. half kick */
+        x1 += dt * v1;                            /* 2. drift */
+        x2 = x2_start + p->velocity * ((double)n * dt); /* 3. driven sphere */
+        status = compute_forces(p, x1, v1, x2, &bridge, &f); /* 4.-6. */
+        if (status != CB_OK) {
+            char what[48];
+            snprintf(what, sizeof what, "step %ld", n);
+            return cli_status_error(name, what, status);
+        }
+        v1 += dtfm * f.f1;                        /* 7. half kick */
+        if (f.transition == CB_BRIDGE_RUPTURED && rupture_step < 0) rupture_step = n;
+        int last = rupture_step >= 0 && n - rupture_step >= p->after;
+        int event = f.transition == CB_BRIDGE_RUPTURED || f.transition == CB_BRIDGE_FORMED;
+        int stuck = rupture_step < 0 && n >= p->max_steps;
+        if (last || event || stuck || n % p->every == 0)
+            print_row(n, (double)n * dt, x1, v1, x2, &bridge, &f); /* 8. */
+        if (last) return 0;
+        if (stuck)
+            return cli_runtime_error(
+                name,
+                "the bridge did not rupture within --max-steps %ld steps (%.6g s, gap %.6g m, "
+                "rupture distance %.6g m): sphere 1 follows sphere 2; raise --velocity or "
+                "--max-steps",
+                p->max_steps, (double)n * dt, f.gap, p->rupture);
+    }
+}
+
 int cmd_pulloff(int argc, char **argv)
 {
     const char *name = "pulloff";
@@ -149,117 +271,11 @@ int cmd_pulloff(int argc, char **argv)
     cli_request request = {name, usage, 1, &law, options, N_OPTIONS, NULL, NULL};
     int code;
     if (!cli_parse(&request, argc, argv, &code)) return code;
-
     pulloff p;
-    p.law = &law;
-    p.r1 = options[R1].number;
-    p.r2 = options[R2].number;
-    p.volume = options[VOLUME].number;
-    p.radsum = p.r1 + p.r2;
-    p.velocity = options[VELOCITY].number;
-    double density = options[DENSITY].number;
-    double m1 = 4.0 * CB_PI / 3.0 * p.r1 * p.r1 * p.r1 * density;
-    double m2 = 4.0 * CB_PI / 3.0 * p.r2 * p.r2 * p.r2 * density;
-    double m = m1 * m2 / (m1 + m2);
-    p.sqrt_mass = sqrt(m);
-    const double kn = options[KN].number;
-    cb_message msg;
-    if (cb_contact_law_init(&p.contact, kn, 0.0, options[DAMPING].number, 0.0,
-                            CB_DASHPOT_APPROACH, &msg) != CB_OK) {
-        cb_law_release(&law);
-        return cli_runtime_error(name, "%s", msg.text);
-    }
-
-    double rupture = 0.0, capillary_stiffness = 0.0;
-    cb_status status = cb_rupture_distance(&law, p.r1, p.r2, p.volume, &rupture);
-    if (status == CB_OK)
-        status = cb_capillary_stiffness_bound(&law, p.r1, p.r2, p.volume, &capillary_stiffness);
-    if (status != CB_OK) {
-        cb_law_release(&law);
-        return cli_status_error(name, "rupture distance", status);
-    }
-    double dt_elastic = 0.02 * CB_PI * sqrt(m / kn);
-    double dt_pull = rupture / (p.velocity * 2000.0);
-    double dt = options[DT].given ? options[DT].number : fmin(dt_elastic, dt_pull);
-    double stiffest = fmax(kn, capillary_stiffness);
-    if (dt > 0.1 * CB_PI * sqrt(m / stiffest))
-        fprintf(stderr,
-                "capbridge pulloff: warning: dt = %g s exceeds 10 %% of pi sqrt(m / k) = %g s "
-                "(k = %g N/m, the larger of k_n and the capillary stiffness)\n",
-                dt, CB_PI * sqrt(m / stiffest), stiffest);
-    double pull_steps = ceil(rupture / (p.velocity * dt));
-    double max_default = 10.0 * pull_steps + 1000.0 + (double)options[AFTER].integer;
-    if (!options[MAX_STEPS].given && !(max_default <= (double)MAX_STEPS_LIMIT)) {
-        cb_law_release(&law);
-        return cli_usage_error(name, "dt = %g s: the pull reaches the rupture distance (%g m) "
-                               "after %.10g steps; the default --max-steps, 10 x %.10g + 1000 + "
-                               "%ld = %.10g, exceeds " MAX_STEPS_TEXT " (the most allowed): give "
-                               "a larger --dt or --velocity, or --max-steps",
-                               dt, rupture, pull_steps, pull_steps, options[AFTER].integer,
-                               max_default);
-    }
-    long max_steps = options[MAX_STEPS].given ? options[MAX_STEPS].integer : (long)max_default;
-    long after = options[AFTER].integer, every = options[EVERY].integer;
-
-    printf("# capbridge pulloff");
-    for (int i = 1; i < argc; ++i) printf(" %s", argv[i]);
-    printf("\n# law = %s, gamma = %.17g N/m, theta = %.17g deg\n", cb_model_name(law.model),
-           law.surface_tension, law.contact_angle * 180.0 / CB_PI);
-    printf("# m1 = %.17g kg, m2 = %.17g kg, reduced_mass = %.17g kg\n", m1, m2, m);
-    printf("# kn = %.17g N/m, damping_coefficient = %.17g kg/s, velocity = %.17g m/s\n", kn,
-           p.contact.damping_factor * p.sqrt_mass, p.velocity);
-    printf("# rupture_distance = %.17g m\n", rupture);
-    printf("# dt = %.17g s (%s)\n", dt,
-           options[DT].given ? "given"
-                             : "default: min(0.02 pi sqrt(m/k_n), rupture_distance/(2000 v))");
-    puts("step,time,x1,v1,x2,gap,capillary_force,contact_force,bridge");
-
-    /* step 0: LAMMPS's setup computes the forces at the initial positions */
-    const double x2_start = p.radsum;
-    const double dtfm = 0.5 * dt / m1; /* fix nve: dtf = 0.5 dt, dtfm = dtf / mass */
-    double x1 = 0.0, v1 = 0.0, x2 = x2_start;
-    cb_bridge bridge = {0};
-    forces f;
-    status = compute_forces(&p, x1, v1, x2, &bridge, &f);
-    if (status != CB_OK) {
-        cb_law_release(&law);
-        return cli_status_error(name, "step 0", status);
-    }
-    if (bridge.active == 0.0) {
-        cb_law_release(&law);
-        return cli_runtime_error(name, "no bridge formed at contact (cb_bridge_update)");
-    }
-    print_row(0, 0.0, x1, v1, x2, &bridge, &f);
-
-    long rupture_step = -1;
-    for (long n = 1;; ++n) {
-        v1 += dtfm * f.f1;                        /* 1. half kick */
-        x1 += dt * v1;                            /* 2. drift */
-        x2 = x2_start + p.velocity * ((double)n * dt); /* 3. driven sphere */
-        status = compute_forces(&p, x1, v1, x2, &bridge, &f); /* 4.-6. */
-        if (status != CB_OK) {
-            char what[48];
-            snprintf(what, sizeof what, "step %ld", n);
-            code = cli_status_error(name, what, status);
-            break;
-        }
-        v1 += dtfm * f.f1;                        /* 7. half kick */
-        if (f.transition == CB_BRIDGE_RUPTURED && rupture_step < 0) rupture_step = n;
-        int last = rupture_step >= 0 && n - rupture_step >= after;
-        int event = f.transition == CB_BRIDGE_RUPTURED || f.transition == CB_BRIDGE_FORMED;
-        int stuck = rupture_step < 0 && n >= max_steps;
-        if (last || event || stuck || n % every == 0)
-            print_row(n, (double)n * dt, x1, v1, x2, &bridge, &f); /* 8. */
-        if (last) break;
-        if (stuck) {
-            code = cli_runtime_error(
-                name,
-                "the bridge did not rupture within --max-steps %ld steps (%.6g s, gap %.6g m, "
-                "rupture distance %.6g m): sphere 1 follows sphere 2; raise --velocity or "
-                "--max-steps",
-                max_steps, (double)n * dt, f.gap, rupture);
-            break;
-        }
+    code = pulloff_setup(name, options, &law, &p);
+    if (code == 0) {
+        print_header(argc, argv, &p, options[DT].given);
+        code = run_pulloff(name, &p);
     }
     cb_law_release(&law);
     return code;
