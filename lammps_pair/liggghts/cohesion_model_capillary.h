@@ -28,7 +28,8 @@
        bridgeVolume), per-particle free liquid from fix property/atom freeLiquid.
      - walls are dry: a fix wall/gran with `cohesion capillary` adds no force.
      - beside this file: capbridge_liggghts_settings.h (the keywords), _reach.h (how far
-       LIGGGHTS visits a pair: the contact distance factor), _liquid.h (Protocol 2's liquid
+       LIGGGHTS visits a pair, the contact distance factor, and the bridges held beyond it,
+       both by the core's rules), _liquid.h (Protocol 2's liquid
        account: warnings when liquid leaves with atoms or a new pair_style), _timestep.h
        (the time-step check against the capillary stiffness).
 
@@ -98,7 +99,7 @@ namespace capbridge_liggghts
         int *contact_flags;
         int i, j;
         int itype, jtype;
-        double ra, rb, radsum, gap;
+        double ra, rb, gap;
         double en[3];
         bool swap;
     };
@@ -129,6 +130,7 @@ namespace ContactModels {
       fix_bridged_(NULL),
       fix_count_(NULL),
       updating_(false),
+      census_(false),
       counting_(false),
       timing_(false),
       account_(lmp),
@@ -236,6 +238,7 @@ namespace ContactModels {
       // the census passes: setup and re-neighboring (when atoms may have left or come)
       const bool census = update->setupflag || neighbor->ago == 0;
       if (neighbor->ago == 0) check_periodic_images();    // the box as the list was built
+      census_ = census;
       counting_ = protocol2_ && census;
       timing_ = census && timestep_.wanted();
       if (timing_) timestep_.begin(ntypes_);
@@ -261,6 +264,7 @@ namespace ContactModels {
       updating_ = false;
       if (protocol2_) finish_formations();
       if (counting_) account_.end(fix_free_->vector_atom);
+      if (census_) reach_.report_beyond();
       if (timing_) timestep_.finish(laws_, pair_law_, protocol2_ ? NULL : bridge_volume_);
     }
 
@@ -340,18 +344,19 @@ namespace ContactModels {
       if (updating_ && cb_bridge_held(law, ra, rb, gap, &bridge, &capillary)) {
         // the common case, a bridge held in contact: its stored force, inline
         have_force = true;
-        if (tally_) tally(i, j_local ? j : -1, bridge.volume);
       } else if (updating_ && (bridge.active != 0.0 || gap <= 0.0)) {
         // (a dry pair that does not touch stays dry: nothing to do)
         if (!protocol2_) {
           const double available = bridge_volume_[d.itype][d.jtype];
           cb_transition change = CB_BRIDGE_STAYS_DRY;
           double released = 0.0;
+          const bool forming = bridge.active == 0.0 && available > 0.0;
+          const double before = forming ? available : bridge.volume;
           check(cb_bridge_step(law, ra, rb, gap, available, &bridge, &change, &released,
                                &capillary),
-                "bridge update", d, gap, bridge.volume);
+                forming ? "bridge update (a new bridge of bridgeVolume)" : "bridge update", d,
+                gap, before);
           have_force = true;
-          if (change == CB_BRIDGE_FORMED) check_reach(law, ra, rb, d.radsum, bridge.volume, d);
           // fixed volume: the liquid of a broken bridge leaves the system
         } else if (bridge.active != 0.0) {
           cb_transition change = CB_BRIDGE_HELD;
@@ -359,13 +364,7 @@ namespace ContactModels {
           check(cb_bridge_step(law, ra, rb, gap, 0.0, &bridge, &change, &released, &capillary),
                 "bridge update", d, gap, bridge.volume);
           have_force = true;
-          if (change == CB_BRIDGE_RUPTURED) {
-            double share_a = 0.0, share_b = 0.0;
-            check(cb_protocol2_release(released, ra, rb, &share_a, &share_b),
-                  "Protocol 2 release", d, gap, released);
-            released_[i] += swap ? share_b : share_a;
-            if (j_local) released_[j] += swap ? share_a : share_b;
-          }
+          if (change == CB_BRIDGE_RUPTURED) release(released, ra, rb, swap, d, gap);
         } else if (gap <= 0.0) {
           const double *free_liquid = fix_free_->vector_atom;
           if (free_liquid[i] + free_liquid[j] > 0.0) {
@@ -383,7 +382,6 @@ namespace ContactModels {
             c.jtype = d.jtype;
             c.ra = ra;
             c.rb = rb;
-            c.radsum = d.radsum;
             c.gap = gap;
             c.en[0] = en[0];
             c.en[1] = en[1];
@@ -393,8 +391,10 @@ namespace ContactModels {
           }
         }
         std::memcpy(hist, &bridge, sizeof bridge);
-        if (tally_ && bridge.active != 0.0) tally(i, j_local ? j : -1, bridge.volume);
       }
+      if (updating_ && bridge.active != 0.0 && reach_.beyond(d.itype, d.jtype, gap))
+        rupture_beyond_reach(bridge, hist, ra, rb, swap, d, gap);
+      if (updating_ && tally_ && bridge.active != 0.0) tally(i, j_local ? j : -1, bridge.volume);
 
       if (bridge.active == 0.0) {
         if (d.contact_flags) *d.contact_flags &= ~CONTACT_COHESION_MODEL;
@@ -407,6 +407,32 @@ namespace ContactModels {
         check(cb_bridge_force(law, ra, rb, gap, &bridge, &capillary), "force", d, gap,
               bridge.volume);
       return capillary;
+    }
+
+    /* A bridge held beyond the reach (a volume above the one the reach was built for) is
+     * ruptured now, before its pair leaves the neighbor list with its liquid (the core's
+     * rule, cb_bridge_beyond_reach); its liquid goes where a broken bridge's goes. */
+    void rupture_beyond_reach(cb_bridge &bridge, double *hist, const double ra,
+                              const double rb, const bool swap, const SurfacesCloseData & d,
+                              const double gap)
+    {
+      const double volume = bridge.volume;
+      std::memset(&bridge, 0, sizeof bridge);
+      std::memcpy(hist, &bridge, sizeof bridge);
+      reach_.count_beyond(d.j < atom->nlocal);
+      if (protocol2_) release(volume, ra, rb, swap, d, gap);
+    }
+
+    /* Protocol 2: a broken bridge's liquid to its two particles' free liquid, from the next
+     * step on (ra, rb in the core's order; swap: i is b). */
+    void release(const double volume, const double ra, const double rb, const bool swap,
+                 const SurfacesCloseData & d, const double gap)
+    {
+      double share_a = 0.0, share_b = 0.0;
+      check(cb_protocol2_release(volume, ra, rb, &share_a, &share_b), "Protocol 2 release", d,
+            gap, volume);
+      released_[d.i] += swap ? share_b : share_a;
+      if (d.j < atom->nlocal) released_[d.j] += swap ? share_a : share_b;
     }
 
     /* Protocol 2: the bridges that formed in this pass take their liquid. */
@@ -436,7 +462,6 @@ namespace ContactModels {
                                 &capillary),
                  "bridge update", c.i, c.j, c.gap, volume);
         if (change != CB_BRIDGE_FORMED) continue;
-        check_reach_at(law, c.ra, c.rb, c.radsum, bridge.volume, c.i, c.j);
         std::memcpy(c.history, &bridge, sizeof bridge);
         if (c.contact_flags) *c.contact_flags |= CONTACT_COHESION_MODEL;
         const bool j_local = c.j < nlocal;
@@ -549,25 +574,6 @@ namespace ContactModels {
                what, atom->tag[i], atom->tag[j], cb_model_name(model_), atom->radius[i],
                atom->radius[j], gap, volume, cb_status_message(status));
       fail_one(text);
-    }
-
-    /* A bridge must rupture while LIGGGHTS still visits its pair: the pair loop calls
-     * surfacesClose only for r < contact_distance_factor * radsum. */
-    void check_reach(const cb_law *law, const double ra, const double rb, const double radsum,
-                     const double volume, const SurfacesCloseData & d)
-    {
-      check_reach_at(law, ra, rb, radsum, volume, d.i, d.j);
-    }
-
-    void check_reach_at(const cb_law *law, const double ra, const double rb,
-                        const double radsum, const double volume, const int i, const int j)
-    {
-      double rupture = 0.0;
-      check_at(cb_rupture_distance(law, ra, rb, volume, &rupture), "rupture distance", i, j,
-               0.0, volume);
-      std::string why;
-      if (!reach_.check(law, ra, rb, radsum, volume, rupture, i, j, protocol2_, why))
-        fail_one(why);
     }
 
     /* ---------------------------------------------------------------- set-up */
@@ -757,6 +763,7 @@ namespace ContactModels {
     std::vector<double> released_;
     std::vector<capbridge_liggghts::Candidate> candidates_;
     bool updating_;
+    bool census_;      // this pass is a census pass (setup, re-neighboring)
     bool counting_;    // this pass is a census of the liquid (Protocol 2: setup, re-neighboring)
     bool timing_;      // this pass checks the time step (setup, re-neighboring; until it warned)
     capbridge_liggghts::LiquidAccount account_;

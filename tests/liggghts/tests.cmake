@@ -37,6 +37,12 @@ add_test(NAME liggghts_held
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/held.py
                  $<TARGET_FILE:capbridge_cli> ${CAPBRIDGE_LIGGGHTS_ENV}
                  --workdir ${_liggghts_work}/held)
+# a bridge held beyond the reach (Protocol 2, more liquid than the reach was built for) is
+# ruptured there, its liquid released, one warning; 1 and 2 ranks
+add_test(NAME liggghts_beyond_reach
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/beyond_reach.py
+                 $<TARGET_FILE:capbridge_cli> ${CAPBRIDGE_LIGGGHTS_ENV}
+                 --workdir ${_liggghts_work}/beyond_reach)
 # easo/capillary/viscous and ours against the exact curves; easo = our soulie at theta 0
 # (the full table of the docs: easo_comparison.py with all laws, see its --output)
 add_test(NAME liggghts_easo_comparison
@@ -65,7 +71,8 @@ add_test(NAME liggghts_timestep
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/timestep.py ${CAPBRIDGE_LIGGGHTS_ENV}
                  --workdir ${_liggghts_work}/timestep)
 set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts_bad_input
-                     liggghts_friction liggghts_held liggghts_easo_comparison liggghts_between_runs
+                     liggghts_friction liggghts_held liggghts_beyond_reach
+                     liggghts_easo_comparison liggghts_between_runs
                      liggghts_restart liggghts_restart_mpi liggghts_liquid_account
                      liggghts_timestep
                      PROPERTIES LABELS "liggghts" TIMEOUT 600)
