@@ -107,9 +107,9 @@ static double prefix_weight(const double *weight, const size_t *order, size_t k)
     return sum_value(&acc);
 }
 
-cb_status cb_protocol1_distribute(const cb_law *law, size_t n, const double *r1,
-                                  const double *r2, const double *gap, double total_liquid,
-                                  cb_protocol1_work work, double *volume, double *alpha)
+static cb_status check_inputs(const cb_law *law, size_t n, const double *r1, const double *r2,
+                              const double *gap, double total_liquid, cb_protocol1_work work,
+                              const double *volume, const double *alpha)
 {
     if (!law || !alpha) return CB_ERR_NULL;
     if (n > 0 && (!r1 || !r2 || !gap || !volume || !work.threshold || !work.weight ||
@@ -122,16 +122,13 @@ cb_status cb_protocol1_distribute(const cb_law *law, size_t n, const double *r1,
         if (!isfinite(r1[i]) || !isfinite(r2[i]) || !isfinite(gap[i])) return CB_ERR_NOT_FINITE;
     for (size_t i = 0; i < n; ++i)
         if (r1[i] <= 0.0 || r2[i] <= 0.0) return CB_ERR_NEGATIVE;
+    return CB_OK;
+}
 
-    if (total_liquid == 0.0) {
-        for (size_t i = 0; i < n; ++i) volume[i] = 0.0;
-        *alpha = 0.0;
-        return CB_OK;
-    }
-    if (n == 0) return CB_ERR_LIQUID; /* liquid but no pair to hold it */
-
-    double *threshold = work.threshold, *weight = work.weight;
-    size_t *order = work.order;
+/* Each pair's weight R_g^3 (eq. 14) and threshold alpha_p, and the pairs in threshold order. */
+static cb_status sort_pairs(const cb_law *law, size_t n, const double *r1, const double *r2,
+                            const double *gap, cb_protocol1_work work)
+{
     for (size_t i = 0; i < n; ++i) {
         double rg = cb_radius_geometric(r1[i], r2[i]);
         double w = rg * rg * rg;
@@ -144,35 +141,49 @@ cb_status cb_protocol1_distribute(const cb_law *law, size_t n, const double *r1,
             t = v / w;
             if (!isfinite(t)) return CB_ERR_RANGE;
         }
-        weight[i] = w;
-        threshold[i] = t;
-        order[i] = i;
+        work.weight[i] = w;
+        work.threshold[i] = t;
+        work.order[i] = i;
     }
-    sort_by_threshold(threshold, order, n);
+    sort_by_threshold(work.threshold, work.order, n);
+    return CB_OK;
+}
 
-    /* The largest admissible prefix K (see the comment at the top). */
-    size_t wet = 0;
+/* The largest admissible prefix K (see the comment at the top): *wet = K, *share = alpha_K. */
+static cb_status largest_prefix(size_t n, double total_liquid, cb_protocol1_work work,
+                                size_t *wet, double *share)
+{
     sum acc = {0.0, 0.0};
-    double share = 0.0;
+    *wet = 0;
+    *share = 0.0;
     for (size_t k = 0; k < n; ++k) {
-        sum_add(&acc, weight[order[k]]);
+        sum_add(&acc, work.weight[work.order[k]]);
         double w_k = sum_value(&acc);
         if (!isfinite(w_k)) return CB_ERR_RANGE;
         double a_k = total_liquid / w_k;
-        if (a_k < threshold[order[k]]) break;
-        wet = k + 1;
-        share = a_k;
+        if (a_k < work.threshold[work.order[k]]) break;
+        *wet = k + 1;
+        *share = a_k;
     }
+    return CB_OK;
+}
 
-    /* The forward check, on the volumes as they will be written; drop rounding failures. */
+/* The forward check, on the volumes as they will be written; drop rounding failures (the
+ * prefix shrinks to the first failure and alpha rises).  CB_ERR_LIQUID when none is left. */
+static cb_status forward_check(const cb_law *law, const double *r1, const double *r2,
+                               const double *gap, double total_liquid, cb_protocol1_work work,
+                               size_t *wet, double *share)
+{
+    const double *weight = work.weight;
+    const size_t *order = work.order;
     cb_law extend = *law; /* a shallow copy: never released */
     extend.validity = CB_VALIDITY_EXTEND;
     for (;;) {
-        if (wet == 0) return CB_ERR_LIQUID; /* the liquid cannot be placed in any bridge */
-        size_t first_failure = wet;
-        for (size_t k = 0; k < wet; ++k) {
+        if (*wet == 0) return CB_ERR_LIQUID; /* the liquid cannot be placed in any bridge */
+        size_t first_failure = *wet;
+        for (size_t k = 0; k < *wet; ++k) {
             size_t p = order[k];
-            double v = share * weight[p], d = 0.0;
+            double v = *share * weight[p], d = 0.0;
             /* A touching pair whose volume underflows to 0 would lose its liquid. */
             if (gap[p] <= 0.0) {
                 if (!(v > 0.0)) return CB_ERR_RANGE;
@@ -186,13 +197,35 @@ cb_status cb_protocol1_distribute(const cb_law *law, size_t n, const double *r1,
                 break;
             }
         }
-        if (first_failure == wet) break;
-        wet = first_failure;
-        if (wet > 0) share = total_liquid / prefix_weight(weight, order, wet);
+        if (first_failure == *wet) return CB_OK;
+        *wet = first_failure;
+        if (*wet > 0) *share = total_liquid / prefix_weight(weight, order, *wet);
     }
+}
+
+cb_status cb_protocol1_distribute(const cb_law *law, size_t n, const double *r1,
+                                  const double *r2, const double *gap, double total_liquid,
+                                  cb_protocol1_work work, double *volume, double *alpha)
+{
+    cb_status status = check_inputs(law, n, r1, r2, gap, total_liquid, work, volume, alpha);
+    if (status != CB_OK) return status;
+    if (total_liquid == 0.0) {
+        for (size_t i = 0; i < n; ++i) volume[i] = 0.0;
+        *alpha = 0.0;
+        return CB_OK;
+    }
+    if (n == 0) return CB_ERR_LIQUID; /* liquid but no pair to hold it */
+
+    size_t wet = 0;
+    double share = 0.0;
+    status = sort_pairs(law, n, r1, r2, gap, work);
+    if (status == CB_OK) status = largest_prefix(n, total_liquid, work, &wet, &share);
+    if (status == CB_OK)
+        status = forward_check(law, r1, r2, gap, total_liquid, work, &wet, &share);
+    if (status != CB_OK) return status;
 
     for (size_t i = 0; i < n; ++i) volume[i] = 0.0;
-    for (size_t k = 0; k < wet; ++k) volume[order[k]] = share * weight[order[k]];
+    for (size_t k = 0; k < wet; ++k) volume[work.order[k]] = share * work.weight[work.order[k]];
     *alpha = share;
     return CB_OK;
 }
