@@ -7,8 +7,9 @@
  * its pair would stop being visited while it exists and its liquid would leave with the
  * neighbor list.  The rules are the core's (capbridge.h, "the engines' checks"): the reach
  * of a type pair, cb_reach, over the radius range of the run and the volume the reach is
- * built for (bridgeVolume, or the protocol's design volume, cb_protocol_design_volume, and
- * the bridges that exist), the factor 1 + its reach_ratio; a held bridge beyond its design
+ * built for (bridgeVolume, or under a per-atom liquid protocol its design volume: vmax when
+ * given, else cb_protocol_design_volume; and the bridges that exist), the factor 1 + its
+ * reach_ratio; a held bridge beyond its design
  * rupture distance is ruptured, cb_bridge_beyond_reach, counted and warned once.  This file
  * gathers the radii, volumes and free liquid from LIGGGHTS and applies the results.
  */
@@ -65,35 +66,40 @@ struct ReachLaws {
 class Reach : protected LAMMPS_NS::Pointers {
   public:
     explicit Reach(LAMMPS_NS::LAMMPS *lmp)
-        : Pointers(lmp), ntypes_(0), protocol2_(false), design_volume_(0.0), beyond_(0.0),
-          warned_(false)
+        : Pointers(lmp), ntypes_(0), per_atom_(false), vmax_given_(false), design_volume_(0.0),
+          largest_radius_(0.0), beyond_(0.0), warned_(false)
     {
     }
 
     /* At the init of every run: the design rupture distance of every pair of types and the
      * contact distance factor that covers it.  The radius range is the run's (particles and
      * insertion fixes: PropertyRegistry); the volume, per pair of types, the largest of the
-     * design volume (bridgeVolume, or under Protocol 2 the core's design volume of the free
-     * liquid) and the bridges that exist (held_volumes).  The design rupture distance never
-     * decreases for one pair_style, as LIGGGHTS's contact distance factor never does: the
+     * design volume (bridgeVolume, or under Protocols 1, 2, 3 vmax > 0 when given, else the
+     * core's design volume of the liquid) and the bridges that exist (held_volumes).  The
+     * design rupture distance never decreases for one pair_style, as LIGGGHTS's contact
+     * distance factor never does: the
      * bridges of the last run that formed after its last re-neighboring are in no record
      * the model can read now (fix contacthistory's partner arrays are that old), and stay
-     * covered.  bridge_volume is NULL under Protocol 2, free_liquid NULL with fixed
+     * covered.  bridge_volume is NULL under the protocols, free_liquid NULL with fixed
      * volumes. */
     void register_factor(PropertyRegistry &registry, const ReachLaws &laws,
-                         double **bridge_volume, const double *free_liquid,
+                         double **bridge_volume, const double *free_liquid, const double vmax,
                          const int history_offset)
     {
         ntypes_ = laws.ntypes;
-        protocol2_ = free_liquid != NULL;
+        per_atom_ = free_liquid != NULL;
+        vmax_given_ = vmax > 0.0;
         if (design_rupture_.size() != (size_t)((ntypes_ + 1) * (ntypes_ + 1)))
             design_rupture_.assign((ntypes_ + 1) * (ntypes_ + 1), 0.0);
         const double rmin = registry.min_radius();
         const double rmax = registry.max_radius();
         if (!(rmin > 0.0) || !(rmax > 0.0) || rmin > 1e100) return;
+        largest_radius_ = rmax;
         const cb_radius_range radii = {rmin, rmax};
-        const std::vector<double> held = held_volumes(history_offset, free_liquid != NULL);
-        if (free_liquid) design_volume_ = protocol_design_volume(radii, free_liquid, held);
+        const std::vector<double> held = held_volumes(history_offset, per_atom_ && !vmax_given_);
+        if (per_atom_)
+            design_volume_ =
+                vmax_given_ ? vmax : protocol_design_volume(radii, free_liquid, held);
         double ratio = 0.0;
         int widest[2] = {1, 1};
         for (int a = 1; a <= ntypes_; ++a)
@@ -110,8 +116,7 @@ class Reach : protected LAMMPS_NS::Pointers {
                              "types %d %d, %s) between radii %g and %g m: law %s (rupture %s): "
                              "%s",
                              volume, a, b, volume > design ? "a bridge that exists"
-                             : free_liquid ? "the design volume of the free liquid"
-                             : "bridgeVolume", rmin, rmax, laws.law, laws.rupture,
+                             : design_name(), rmin, rmax, laws.law, laws.rupture,
                              cb_status_message(status));
                     error->all(FLERR, text);
                 }
@@ -129,8 +134,13 @@ class Reach : protected LAMMPS_NS::Pointers {
         double factor = 1.0 + ratio;
         if (factor - 1.0 < ratio) factor = nextafter(factor, 2.0);
         neighbor->register_contact_dist_factor(factor);
-        check_resolved(laws.of(widest[0], widest[1]), rmin, ratio, free_liquid != NULL);
+        check_resolved(laws.of(widest[0], widest[1]), rmin, ratio);
     }
+
+    /* Under the liquid protocols: the design volume of this run and the largest radius it
+     * was built for (Protocol 1 checks its largest bridge against them). */
+    double design_volume() const { return design_volume_; }
+    double largest_radius() const { return largest_radius_; }
 
     /* A bridge of atom types a, b held at this gap is beyond the reach (the core's rule):
      * the model ruptures it now and counts it. */
@@ -156,16 +166,22 @@ class Reach : protected LAMMPS_NS::Pointers {
                  BIGINT_FORMAT " (a gap beyond the rupture distance %g m of the volume the "
                  "reach of this run is built for, %s) were ruptured there, before their own "
                  "rupture distance, their liquid released as at any rupture (liquid "
-                 "protocol2: to the two particles; liquid fixed: it leaves); the next run's "
-                 "reach also covers the free liquid and the bridges then; this warning is "
-                 "given once",
-                 all, update->ntimestep, largest_design_rupture(),
-                 protocol2_ ? "the design volume of the free liquid" : "bridgeVolume");
+                 "protocol1, protocol2: to the two particles; protocol3: to their receivers; "
+                 "liquid fixed: it leaves); the next run's reach also covers the bridges "
+                 "then%s; this warning is given once",
+                 all, update->ntimestep, largest_design_rupture(), design_name(),
+                 per_atom_ && !vmax_given_ ? " and the free liquid" : "");
         error->warning(FLERR, text);
     }
 
   private:
-    /* Protocol 2's design volume (cb_protocol_design_volume): the liquid of the run (free
+    const char *design_name() const
+    {
+        return !per_atom_ ? "bridgeVolume"
+                          : vmax_given_ ? "vmax" : "the design volume of the liquid";
+    }
+
+    /* The protocols' design volume (cb_protocol_design_volume): the liquid of the run (free
      * liquid and bridges, held[0]), the number of particles, their radius range and the
      * largest free liquid of one particle, over all ranks. */
     double protocol_design_volume(const cb_radius_range &radii, const double *free_liquid,
@@ -208,8 +224,7 @@ class Reach : protected LAMMPS_NS::Pointers {
      * would leave with the neighbor list as soon as the particles part: an error with the
      * smallest volume that works (for the smallest radii, where the ratio is largest) and a
      * factor that keeps such bridges. */
-    void check_resolved(const cb_law *law, const double rmin, const double ratio,
-                        const bool protocol2)
+    void check_resolved(const cb_law *law, const double rmin, const double ratio)
     {
         const double resolved = 64.0 * DBL_EPSILON;
         if (neighbor->contactDistanceFactor - 1.0 >= resolved) return;
@@ -218,7 +233,7 @@ class Reach : protected LAMMPS_NS::Pointers {
         if (cb_rupture_volume(law, rmin, rmin, resolved * 2.0 * rmin, &smallest) == CB_OK)
             snprintf(least, sizeof least, "at least %s m^3 per bridge%s, ",
                      format_at_least(smallest * (1.0 + 1e-6)).c_str(),
-                     protocol2 ? " (the freeLiquid of its two particles together)" : "");
+                     per_atom_ ? " (the freeLiquid of its two particles together)" : "");
         char text[900];
         snprintf(text, sizeof text,
                  "cohesion model capillary: the bridges this run is built for (%s) rupture "
@@ -226,7 +241,7 @@ class Reach : protected LAMMPS_NS::Pointers {
                  "tell from contact: a volume this small makes no meaningful bridge.  Give "
                  "%sor no liquid (0: the pair stays dry); or, to keep such bridges, "
                  "'neigh_modify contact_distance_factor %s'",
-                 protocol2 ? "the design volume of the free liquid" : "bridgeVolume", ratio,
+                 design_name(), ratio,
                  least, format_at_least(1.0 + resolved).c_str());
         error->all(FLERR, text);
     }
@@ -263,9 +278,11 @@ class Reach : protected LAMMPS_NS::Pointers {
     }
 
     int ntypes_;
-    bool protocol2_;
+    bool per_atom_;                       // liquid protocol1, 2, 3 (not fixed)
+    bool vmax_given_;                     // the design volume given with vmax
     std::vector<double> design_rupture_;  // per pair of types, [a * (ntypes + 1) + b]
-    double design_volume_;                // Protocol 2's design volume
+    double design_volume_;                // the protocols' design volume [m^3]
+    double largest_radius_;               // the largest radius of the run [m]
     double beyond_;                       // this rank's bridges ruptured beyond the reach
     bool warned_;
 };

@@ -223,7 +223,7 @@ inline bool check_validity(const std::string &k, const std::string &v, std::stri
 }
 inline bool check_liquid(const std::string &k, const std::string &v, std::string &why)
 {
-    static const char *const allowed[] = {"fixed", "protocol2", NULL};
+    static const char *const allowed[] = {"fixed", "protocol1", "protocol2", "protocol3", NULL};
     return check_one_of(k, v, allowed, why);
 }
 inline bool check_on_off(const std::string &k, const std::string &v, std::string &why)

@@ -27,11 +27,13 @@
      - parameters come from fix property/global (surfaceTension, contactAngle,
        bridgeVolume), per-particle free liquid from fix property/atom freeLiquid.
      - walls are dry: a fix wall/gran with `cohesion capillary` adds no force.
-     - beside this file: capbridge_liggghts_settings.h (the keywords), _reach.h (how far
+     - beside this file: capbridge_liggghts_settings.h (the keywords), _laws.h (the law of
+       each pair of atom types), _reach.h (how far
        LIGGGHTS visits a pair, the contact distance factor, and the bridges held beyond it,
-       both by the core's rules), _liquid.h (Protocol 2's liquid
-       account: warnings when liquid leaves with atoms or a new pair_style), _timestep.h
-       (the time-step check against the capillary stiffness).
+       both by the core's rules), _liquid.h (the liquid account of the protocols: warnings
+       when liquid leaves with atoms or a new pair_style), _timestep.h (the time-step check
+       against the capillary stiffness), _protocols.h (the keywords every and vmax, and
+       Protocols 1 and 3: _protocol1.h, _protocol3.h).
 
    Parallel consistency (LIGGGHTS requires `newton off` with contact history): a pair
    whose atoms live on two ranks is computed on both, each rank updating only its own
@@ -54,7 +56,9 @@ COHESION_MODEL(COHESION_CAPILLARY,capillary,9)
 #include "contact_models.h"
 #include "cohesion_model_base.h"
 #include "capbridge_liggghts_settings.h"
+#include "capbridge_liggghts_laws.h"
 #include "capbridge_liggghts_liquid.h"
+#include "capbridge_liggghts_protocols.h"
 #include "capbridge_liggghts_reach.h"
 #include "capbridge_liggghts_timestep.h"
 #include "capbridge.h"
@@ -119,7 +123,7 @@ namespace ContactModels {
       law_given_(false),
       c_given_(false),
       tally_(false),
-      protocol2_(false),
+      per_atom_liquid_(false),
       model_(CB_MODEL_WILLETT),
       surface_tension_(0.0),
       contact_angle_(NULL),
@@ -135,7 +139,8 @@ namespace ContactModels {
       timing_(false),
       account_(lmp),
       reach_(lmp),
-      timestep_(lmp)
+      timestep_(lmp),
+      protocols_(lmp)
     {
       // walls are dry: no history, no properties, no force
       if (!wall_) {
@@ -151,11 +156,6 @@ namespace ContactModels {
       }
     }
 
-    ~CohesionModel()
-    {
-      release_laws();
-    }
-
     void registerSettings(Settings & settings)
     {
       using namespace capbridge_liggghts;
@@ -168,6 +168,7 @@ namespace ContactModels {
       // on/off as words: LIGGGHTS's own on/off reader reads past the end of the command
       // when the keyword is its last word (std::string from NULL: SIGABRT)
       register_word(settings, "tally", "off", &check_on_off, tally_word_, NULL, input);
+      protocols_.register_settings(settings, input);
       register_removed(settings, "capillary_friction",
                        "cohesion model capillary: keyword 'capillary_friction' was removed: the "
                        "Coulomb limit of the tangential model is always mu |f_n^e + f_n^d|, the "
@@ -179,7 +180,8 @@ namespace ContactModels {
 
     inline void postSettings(IContactHistorySetup *, ContactModelBase *)
     {
-      protocol2_ = (liquid_ == "protocol2");
+      per_atom_liquid_ = (liquid_ != "fixed");
+      protocols_.post_settings(liquid_, error);  // (an error for a keyword it does not take)
       tally_ = (tally_word_ == "on");
       if (wall_) return;
       if (law_given_) {
@@ -188,7 +190,8 @@ namespace ContactModels {
                    cb_law_names());
       }
       connect_internal_fixes();
-      if (protocol2_) account_.create();
+      if (per_atom_liquid_) account_.create();
+      if (protocols_.protocol3) protocols_.receivers.create();
     }
 
     void connectToProperties(PropertyRegistry & registry)
@@ -213,19 +216,24 @@ namespace ContactModels {
       registry.registerProperty("contactAngle", &MODEL_PARAMS::createContactAngle);
       registry.connect("surfaceTension", surface_tension_, caller);
       registry.connect("contactAngle", contact_angle_, caller);
-      if (!protocol2_) {
+      if (!per_atom_liquid_) {
         registry.registerProperty("bridgeVolume", &MODEL_PARAMS::createCapillaryBridgeVolume);
         registry.connect("bridgeVolume", bridge_volume_, caller);
       }
       ntypes_ = registry.max_type();
 
       check_properties();
-      build_laws();
+      const capbridge_liggghts::LawWords words = {model_, law_name_, rupture_, overlap_,
+                                                  validity_, richefeu_c_, c_given_};
+      laws_.build(error, words, surface_tension_, contact_angle_, ntypes_);
       connect_per_atom();
-      const capbridge_liggghts::ReachLaws laws = {&laws_, &pair_law_, ntypes_, law_name_.c_str(),
+      const capbridge_liggghts::ReachLaws laws = {&laws_.laws, &laws_.pair_law, ntypes_,
+                                                  law_name_.c_str(),
                                                   rupture_.c_str(), validity_.c_str()};
-      reach_.register_factor(registry, laws, protocol2_ ? NULL : bridge_volume_,
-                             protocol2_ ? fix_free_->vector_atom : NULL, history_offset_);
+      reach_.register_factor(registry, laws, per_atom_liquid_ ? NULL : bridge_volume_,
+                             per_atom_liquid_ ? fix_free_->vector_atom : NULL,
+                             protocols_.vmax(), history_offset_);
+      protocols_.connect(laws_.laws);
     }
 
     void beginPass(SurfacesIntersectData & sidata, ForceData &, ForceData &)
@@ -239,12 +247,13 @@ namespace ContactModels {
       const bool census = update->setupflag || neighbor->ago == 0;
       if (neighbor->ago == 0) check_periodic_images();    // the box as the list was built
       census_ = census;
-      counting_ = protocol2_ && census;
+      counting_ = per_atom_liquid_ && census;
       timing_ = census && timestep_.wanted();
       if (timing_) timestep_.begin(ntypes_);
       const int nall = atom->nlocal + atom->nghost;
-      if (protocol2_) {
+      if (per_atom_liquid_) {
         if (counting_) account_.begin(fix_free_->vector_atom);
+        protocols_.begin_pass(laws_.laws, history_offset_, fix_free_->vector_atom, reach_);
         fix_free_->do_forward_comm();
         double *nform = fix_formations_->vector_atom;
         for (int k = 0; k < nall; ++k) nform[k] = 0.0;
@@ -262,17 +271,19 @@ namespace ContactModels {
     {
       if (wall_ || !updating_) return;
       updating_ = false;
-      if (protocol2_) finish_formations();
+      if (per_atom_liquid_) finish_formations();
       if (counting_) account_.end(fix_free_->vector_atom);
       if (census_) reach_.report_beyond();
-      if (timing_) timestep_.finish(laws_, pair_law_, protocol2_ ? NULL : bridge_volume_);
+      if (timing_)
+        timestep_.finish(laws_.laws, laws_.pair_law,
+                         per_atom_liquid_ ? NULL : bridge_volume_);
     }
 
     /* a bridge that exists after this pass's transitions, in a census pass */
     void census_bridge(const int itype, const int jtype, const bool j_local, const double volume)
     {
       if (counting_) account_.add_bridge(j_local, volume);
-      if (timing_ && protocol2_) timestep_.add_bridge(itype, jtype, volume);
+      if (timing_ && per_atom_liquid_) timestep_.add_bridge(itype, jtype, volume);
     }
 
     inline void endSurfacesIntersect(SurfacesIntersectData &, ForceData &, ForceData &) {}
@@ -328,7 +339,7 @@ namespace ContactModels {
       const bool swap = d.radj < d.radi;
       const double ra = swap ? d.radj : d.radi;
       const double rb = swap ? d.radi : d.radj;
-      const cb_law *law = law_for(d.itype, d.jtype);
+      const cb_law *law = laws_.of(d.itype, d.jtype);
       if (updating_ && update->setupflag && bridge.active != 0.0) {
         // (a restart file of a build whose history was laid out otherwise, 2 values a pair
         // before the bridge kept its constants: CB_ERR_BRIDGE_STATE, which says so)
@@ -346,7 +357,7 @@ namespace ContactModels {
         have_force = true;
       } else if (updating_ && (bridge.active != 0.0 || gap <= 0.0)) {
         // (a dry pair that does not touch stays dry: nothing to do)
-        if (!protocol2_) {
+        if (!per_atom_liquid_) {
           const double available = bridge_volume_[d.itype][d.jtype];
           cb_transition change = CB_BRIDGE_STAYS_DRY;
           double released = 0.0;
@@ -365,7 +376,7 @@ namespace ContactModels {
                 "bridge update", d, gap, bridge.volume);
           have_force = true;
           if (change == CB_BRIDGE_RUPTURED) release(released, ra, rb, swap, d, gap);
-        } else if (gap <= 0.0) {
+        } else if (gap <= 0.0 && !protocols_.protocol1) {  // (P1: only in a distribution)
           const double *free_liquid = fix_free_->vector_atom;
           if (free_liquid[i] + free_liquid[j] > 0.0) {
             // a new bridge: it takes its liquid in endPass, once every rank knows how
@@ -395,6 +406,8 @@ namespace ContactModels {
       if (updating_ && bridge.active != 0.0 && reach_.beyond(d.itype, d.jtype, gap))
         rupture_beyond_reach(bridge, hist, ra, rb, swap, d, gap);
       if (updating_ && tally_ && bridge.active != 0.0) tally(i, j_local ? j : -1, bridge.volume);
+      if (updating_ && protocols_.protocol3 && bridge.active != 0.0)
+        protocols_.receivers.offer(d, hist, law, ra, rb, gap, en[2]);
 
       if (bridge.active == 0.0) {
         if (d.contact_flags) *d.contact_flags &= ~CONTACT_COHESION_MODEL;
@@ -420,7 +433,7 @@ namespace ContactModels {
       std::memset(&bridge, 0, sizeof bridge);
       std::memcpy(hist, &bridge, sizeof bridge);
       reach_.count_beyond(d.j < atom->nlocal);
-      if (protocol2_) release(volume, ra, rb, swap, d, gap);
+      if (per_atom_liquid_) release(volume, ra, rb, swap, d, gap);
     }
 
     /* Protocol 2: a broken bridge's liquid to its two particles' free liquid, from the next
@@ -453,7 +466,7 @@ namespace ContactModels {
         double *from_b = c.swap ? &from_i : &from_j;
         check_at(cb_protocol2_take(from_a, from_b, &volume), "Protocol 2 take", c.i, c.j,
                  c.gap, volume);
-        const cb_law *law = law_for(c.itype, c.jtype);
+        const cb_law *law = laws_.of(c.itype, c.jtype);
         cb_bridge bridge;
         std::memset(&bridge, 0, sizeof bridge);
         cb_transition change = CB_BRIDGE_STAYS_DRY;
@@ -475,9 +488,28 @@ namespace ContactModels {
       }
       for (int i = 0; i < nlocal; ++i) {
         if (nform[i] > 0.0) free_liquid[i] = 0.0;
-        free_liquid[i] += released_[i];
+        if (!protocols_.protocol3) free_liquid[i] += released_[i];
       }
       candidates_.clear();
+      if (protocols_.protocol3) deposit_released();
+    }
+
+    /* Protocol 3: the liquid released in this pass to its receivers (or the free liquid);
+     * a bridge grown beyond the reach is ruptured at its next step beyond it (Reach). */
+    void deposit_released()
+    {
+      capbridge_liggghts::Protocol3 &receivers = protocols_.receivers;
+      receivers.settle(fix_free_->vector_atom, released_);
+      for (size_t k = 0; k < receivers.size(); ++k) {
+        double volume = 0.0;  // the bridge grows in its history; this pass counted it before
+        const double added = receivers.deposit(k, &volume);
+        if (!(added > 0.0)) continue;
+        const capbridge_liggghts::HeldBridge &b = receivers.bridge(k);
+        const bool j_local = b.j < atom->nlocal;
+        if (counting_) account_.add_bridge(j_local, added);
+        if (timing_) timestep_.add_bridge(b.itype, b.jtype, volume);
+        if (tally_) tally(b.i, j_local ? b.j : -1, added, 0.0);  // liquid, no new bridge
+      }
     }
 
     void apply(const double capillary, const double *en, ForceData & i_forces,
@@ -496,21 +528,16 @@ namespace ContactModels {
     }
 
     /* Per-atom output: half of every bridge's liquid and one count per bridge end. */
-    void tally(const int i, const int j, const double volume)
+    void tally(const int i, const int j, const double volume, const double ends = 1.0)
     {
       double *bridged = fix_bridged_->vector_atom;
       double *count = fix_count_->vector_atom;
       bridged[i] += 0.5 * volume;
-      count[i] += 1.0;
+      count[i] += ends;
       if (j >= 0) {
         bridged[j] += 0.5 * volume;
-        count[j] += 1.0;
+        count[j] += ends;
       }
-    }
-
-    const cb_law *law_for(const int itype, const int jtype) const
-    {
-      return &laws_[pair_law_[itype * (ntypes_ + 1) + jtype]];
     }
 
     /* ---------------------------------------------------------------- errors */
@@ -598,7 +625,7 @@ namespace ContactModels {
           error->all(FLERR, text);
         }
       }
-      if (!protocol2_) {
+      if (!per_atom_liquid_) {
         for (int a = 1; a <= ntypes_; ++a)
           for (int b = 1; b <= ntypes_; ++b) {
             const double v = bridge_volume_[a][b];
@@ -620,80 +647,11 @@ namespace ContactModels {
       }
     }
 
-    /* One law per distinct contact angle of a pair of types, the angle of the pair being
-     * the mean of the two types' angles. Rebuilt only when something changed (the table
-     * law builds its table in cb_law_prepare). */
-    void build_laws()
-    {
-      std::vector<double> theta_of_pair((ntypes_ + 1) * (ntypes_ + 1), 0.0);
-      std::vector<double> thetas;
-      std::vector<int> index((ntypes_ + 1) * (ntypes_ + 1), 0);
-      for (int a = 1; a <= ntypes_; ++a)
-        for (int b = 1; b <= ntypes_; ++b) {
-          const double theta = 0.5 * (contact_angle_[a] + contact_angle_[b]);
-          size_t k = 0;
-          while (k < thetas.size() && thetas[k] != theta) ++k;
-          if (k == thetas.size()) thetas.push_back(theta);
-          index[a * (ntypes_ + 1) + b] = (int)k;
-        }
-      char number[64];
-      std::string key = law_name_ + "|" + rupture_ + "|" + overlap_ + "|" + validity_ + "|" +
-                        (c_given_ ? richefeu_c_ : std::string("-"));
-      snprintf(number, sizeof number, "|%.17g", surface_tension_);
-      key += number;
-      for (size_t k = 0; k < thetas.size(); ++k) {
-        snprintf(number, sizeof number, "|%.17g", thetas[k]);
-        key += number;
-      }
-      pair_law_ = index;
-      if (key == law_key_ && laws_.size() == thetas.size()) return;
-
-      release_laws();
-      law_key_.clear();
-      for (size_t k = 0; k < thetas.size(); ++k) {
-        cb_law law;
-        cb_message msg;
-        msg.text[0] = '\0';
-        cb_status status = cb_law_init(&law, model_, surface_tension_, thetas[k]);
-        if (status != CB_OK) {
-          fail_all(std::string("cohesion model capillary: ") + cb_status_message(status));
-        }
-        configure(law, "rupture", rupture_);
-        configure(law, "overlap", overlap_);
-        configure(law, "validity", validity_);
-        if (c_given_) configure(law, "c", richefeu_c_);
-        status = cb_law_prepare(&law, &msg);
-        if (status != CB_OK) {
-          cb_law_release(&law);
-          fail_all(std::string("cohesion model capillary: law ") + law_name_ + ": " + msg.text);
-        }
-        laws_.push_back(law);
-      }
-      law_key_ = key;
-    }
-
-    void configure(cb_law &law, const char *keyword, const std::string &value)
-    {
-      cb_message msg;
-      msg.text[0] = '\0';
-      if (cb_law_configure(&law, keyword, value.c_str(), &msg) != CB_OK) {
-        cb_law_release(&law);
-        fail_all(std::string("cohesion model capillary: law ") + law_name_ + ": " + msg.text);
-      }
-    }
-
-    void release_laws()
-    {
-      for (size_t k = 0; k < laws_.size(); ++k) cb_law_release(&laws_[k]);
-      laws_.clear();
-      law_key_.clear();
-    }
-
     /* the per-atom arrays of the model exist from the pair_style command on, so that dumps
      * and computes defined before the first run can refer to them */
     void connect_internal_fixes()
     {
-      if (protocol2_)
+      if (per_atom_liquid_)
         fix_formations_ = capbridge_liggghts::internal_fix(modify, "capillaryFormations", "yes");
       if (tally_) {
         fix_bridged_ = capbridge_liggghts::internal_fix(modify, "bridgedLiquid", "no");
@@ -717,10 +675,10 @@ namespace ContactModels {
 
     void connect_per_atom()
     {
-      if (protocol2_) {
+      if (per_atom_liquid_) {
         fix_free_ = static_cast<FixPropertyAtom *>(modify->find_fix_property(
             "freeLiquid", "property/atom", "scalar", 0, 0,
-            "cohesion model capillary (liquid protocol2)"));
+            "cohesion model capillary (liquid protocol1, protocol2, protocol3)"));
         initialise_now(fix_free_);
         if (fix_free_->comm_forward < 1)
           error->all(FLERR, "cohesion model capillary: fix property/atom freeLiquid must be "
@@ -747,7 +705,7 @@ namespace ContactModels {
     bool law_given_, c_given_;
     std::string tally_word_;  // on/off
     bool tally_;
-    bool protocol2_;
+    bool per_atom_liquid_;  // Protocols 1, 2, 3: the liquid in freeLiquid and the bridges
     cb_model model_;
     // properties
     double surface_tension_;
@@ -755,9 +713,7 @@ namespace ContactModels {
     double **bridge_volume_;  // [m^3], per pair of atom types (liquid fixed)
     int ntypes_;
     // laws: one per distinct contact angle
-    std::vector<cb_law> laws_;
-    std::vector<int> pair_law_;
-    std::string law_key_;
+    capbridge_liggghts::PairLaws laws_;
     // per-atom data
     FixPropertyAtom *fix_free_, *fix_formations_, *fix_bridged_, *fix_count_;
     std::vector<double> released_;
@@ -769,6 +725,7 @@ namespace ContactModels {
     capbridge_liggghts::LiquidAccount account_;
     capbridge_liggghts::Reach reach_;
     capbridge_liggghts::TimestepCheck timestep_;
+    capbridge_liggghts::Protocols protocols_;
   };
 }
 }

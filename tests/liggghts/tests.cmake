@@ -70,9 +70,14 @@ add_test(NAME liggghts_liquid_account
 add_test(NAME liggghts_timestep
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/timestep.py ${CAPBRIDGE_LIGGGHTS_ENV}
                  --workdir ${_liggghts_work}/timestep)
+# Protocols 1, 2, 3: liquid conserved at every step on 1, 2 and 3 ranks, bridges forming and
+# rupturing, the same bridges on every rank count
+add_test(NAME liggghts_protocols
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/protocols.py ${CAPBRIDGE_LIGGGHTS_ENV}
+                 --workdir ${_liggghts_work}/protocols)
 set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts_bad_input
                      liggghts_friction liggghts_held liggghts_beyond_reach
                      liggghts_easo_comparison liggghts_between_runs
                      liggghts_restart liggghts_restart_mpi liggghts_liquid_account
-                     liggghts_timestep
+                     liggghts_timestep liggghts_protocols
                      PROPERTIES LABELS "liggghts" TIMEOUT 600)
