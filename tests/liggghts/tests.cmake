@@ -75,9 +75,18 @@ add_test(NAME liggghts_timestep
 add_test(NAME liggghts_protocols
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/protocols.py ${CAPBRIDGE_LIGGGHTS_ENV}
                  --workdir ${_liggghts_work}/protocols)
+# Protocol 1's distribution against the core's cb_protocol1_distribute over the dumped
+# spheres, computed without LIGGGHTS (protocol1_reference.c); 1 and 3 ranks
+add_executable(liggghts_protocol1_reference ${_liggghts_dir}/protocol1_reference.c)
+target_link_libraries(liggghts_protocol1_reference PRIVATE capbridge)
+target_compile_options(liggghts_protocol1_reference PRIVATE ${CAPBRIDGE_WARNINGS})
+add_test(NAME liggghts_protocol1_reference
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/protocol1_reference.py
+                 $<TARGET_FILE:liggghts_protocol1_reference> ${CAPBRIDGE_LIGGGHTS_ENV}
+                 --workdir ${_liggghts_work}/protocol1_reference)
 set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts_bad_input
                      liggghts_friction liggghts_held liggghts_beyond_reach
                      liggghts_easo_comparison liggghts_between_runs
                      liggghts_restart liggghts_restart_mpi liggghts_liquid_account
-                     liggghts_timestep liggghts_protocols
+                     liggghts_timestep liggghts_protocols liggghts_protocol1_reference
                      PROPERTIES LABELS "liggghts" TIMEOUT 600)
