@@ -51,6 +51,8 @@ struct CapillaryBridges {
     double formation_volume = 0.0; // a new bridge's volume in liquid mode fixed (0: none forms)
     double volume = -1.0;          // the pair_coeff volume (-1: not given, 0: never a bridge)
     double cutsq = 0.0;            // the neighbor cutoff squared (init_one)
+    double design_rupture = 0.0;   // the largest rupture distance the reach is built for
+                                   // (cb_reach): a held bridge beyond it is ruptured
     const cb_law *law = nullptr;   // its prepared law (nullptr: no pair_coeff)
     int contact_on = 0;            // 0: pair_coeff contact none
     int law_index = -1;            // the law's place in law_text (and the pair's laws)
@@ -95,6 +97,15 @@ struct CapillaryBridges {
     if (tp.volume == 0.0) return 0;
     if (groupbit && (!(mask[i] & groupbit) || !(mask[j] & groupbit))) return 0;
     return 1;
+  }
+
+  // A held bridge beyond the reach is ruptured now: the core's rule (a gap beyond the design
+  // rupture distance, cb_bridge_beyond_reach), and where LAMMPS's list ends (the cutoff is a
+  // distance, not a multiple of the radii: a sphere grown beyond its type's radius range
+  // reaches it first), so that the pair never leaves the list holding liquid.
+  static bool beyond_reach(double rsq, double gap, const TypePair &tp)
+  {
+    return cb_bridge_beyond_reach(gap, tp.design_rupture) || rsq >= tp.cutsq;
   }
 
   // a core call's status: nothing on CB_OK (inline: it follows every core call of the bridge

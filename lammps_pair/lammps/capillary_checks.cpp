@@ -17,24 +17,16 @@
 #include "error.h"
 #include "fix.h"
 #include "fix_neigh_history.h"
-#include "math_const.h"
 #include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
 using namespace LAMMPS_NS;
-
-using MathConst::MY_PI;
-
-namespace {
-// The neighbor reach exceeds the largest rupture distance by this fraction, so that a
-// bridge held at exactly its rupture distance is never cut by the reach test.
-constexpr double REACH_MARGIN = 1e-9;
-}    // namespace
 
 /* ----------------------------------------------------------------------
    smallest and largest radius per type: atoms present and future fix pour/deposit
@@ -82,42 +74,32 @@ double PairGranCapillary::design_volume(int itype, int jtype) const
 }
 
 /* ----------------------------------------------------------------------
-   the largest rupture distance of a bridge of volume vol between spheres of these
-   types: a 5 x 5 grid over both radius ranges (corners included); every law in the
-   core has its largest rupture distance at a corner (Lian: none depends on the radii;
-   Willett: at the smallest harmonic radius), the grid covers the table law
+   the neighbor reach of bridges of up to `volume` between spheres of these types: the
+   core's rule (cb_reach: the largest rupture distance over the two radius ranges, the
+   design rupture distance, and the reach, CB_REACH_MARGIN beyond it)
 ------------------------------------------------------------------------- */
 
-double PairGranCapillary::max_rupture(int itype, int jtype, double vol) const
+void PairGranCapillary::type_pair_reach(int itype, int jtype, double volume,
+                                        double &design_rupture, double &reach) const
 {
-  if (!(vol > 0.0)) return 0.0;
-  cb_law extend = *law(itype, jtype);    // shallow: never released
-  extend.validity = CB_VALIDITY_EXTEND;
-  double largest = 0.0;
-  const int steps = 4;
-  for (int a = 0; a <= steps; a++)
-    for (int b = 0; b <= steps; b++) {
-      double r1 = rad_min[itype] + (rad_max[itype] - rad_min[itype]) * a / steps;
-      double r2 = rad_min[jtype] + (rad_max[jtype] - rad_min[jtype]) * b / steps;
-      if (!(r1 > 0.0) || !(r2 > 0.0)) continue;
-      double d = 0.0;
-      int status = cb_rupture_distance(&extend, r1, r2, vol, &d);
-      if (status != CB_OK)
-        error->all(FLERR, "pair gran/capillary: types {} {}: law {} has no rupture distance for "
-                   "a bridge of volume {} between radii {} and {}: {}", itype, jtype,
-                   cb_model_name(extend.model), vol, r1, r2,
-                   cb_status_message((cb_status) status));
-      largest = MAX(largest, d);
-    }
-  return largest;
+  const cb_radius_range range_i = {rad_min[itype], rad_max[itype]};
+  const cb_radius_range range_j = {rad_min[jtype], rad_max[jtype]};
+  const int status =
+      cb_reach(law(itype, jtype), range_i, range_j, volume, &design_rupture, &reach, nullptr);
+  if (status != CB_OK)
+    error->all(FLERR, "pair gran/capillary: types {} {}: law {} has no rupture distance for "
+               "a bridge of volume {} between radii {} to {} and {} to {}: {}", itype, jtype,
+               cb_model_name(law(itype, jtype)->model), volume, range_i.min, range_i.max,
+               range_j.min, range_j.max, cb_status_message((cb_status) status));
 }
 
 /* ----------------------------------------------------------------------
    the neighbor cutoff of a type pair (init_one): the radius sum of its largest spheres
-   plus the largest rupture distance of the bridges it may hold
+   plus the reach of the bridges it may hold; design_rupture: the design rupture distance
+   of that reach, beyond which a held bridge is ruptured (cb_bridge_beyond_reach)
 ------------------------------------------------------------------------- */
 
-double PairGranCapillary::pair_cutoff(int i, int j)
+double PairGranCapillary::pair_cutoff(int i, int j, double &design_rupture)
 {
   double ri = rad_max[i], rj = rad_max[j];
   if (ri <= 0.0 || rj <= 0.0) {
@@ -127,15 +109,14 @@ double PairGranCapillary::pair_cutoff(int i, int j)
     if (ri <= 0.0) ri = rmax;
     if (rj <= 0.0) rj = rmax;
   }
+  // the design volume, or a larger bridge that exists (held_volumes)
+  const double reach_volume = MAX(design_volume(i, j), MAX(held_volume[i], held_volume[j]));
   double reach = 0.0;
-  if (rad_max[i] > 0.0 && rad_max[j] > 0.0) {
-    // the design volume, or a larger bridge that exists (held_volumes)
-    const double reach_volume =
-        MAX(design_volume(i, j), MAX(held_volume[i], held_volume[j]));
-    reach = max_rupture(i, j, reach_volume) * (1.0 + REACH_MARGIN);
-  }
-  double cut = ri + rj + reach;
-  if (reach > ri + rj && !reach_warned) {
+  design_rupture = 0.0;
+  if (rad_max[i] > 0.0 && rad_max[j] > 0.0)
+    type_pair_reach(i, j, reach_volume, design_rupture, reach);
+  const double cut = ri + rj + reach;
+  if (design_rupture > ri + rj && !reach_warned) {
     // a rupture distance beyond a diameter needs a bridge of several sphere volumes
     // (Lian's rule: V > (R_i + R_j)^3): most likely a volume in other units
     reach_warned = 1;
@@ -144,28 +125,28 @@ double PairGranCapillary::pair_cutoff(int i, int j)
                      "ruptures at {:.6g}, beyond the radius sum {:.6g} of the largest spheres "
                      "(a bridge larger than the spheres: check the volume and its units); the "
                      "neighbor cutoff is {:.6g}; this warning is given once", i, j,
-                     MAX(design_volume(i, j), MAX(held_volume[i], held_volume[j])),
-                     reach / (1.0 + REACH_MARGIN), ri + rj, cut);
+                     reach_volume, design_rupture, ri + rj, cut);
   }
   return cut;
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   the cutoff of two spheres of these radii (fix pour, deposit): the largest reach of the
+   design volumes of the type pairs (cb_reach for the two radii alone)
+------------------------------------------------------------------------- */
 
 double PairGranCapillary::radii2cut(double r1, double r2)
 {
-  double reach = 0.0;
+  double largest = 0.0;
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
       if (!setflag[i][j]) continue;
-      double vol = design_volume(i, j);
-      if (!(vol > 0.0)) continue;
-      double d = 0.0;
-      cb_law extend = *law(i, j);
-      extend.validity = CB_VALIDITY_EXTEND;
-      if (cb_rupture_distance(&extend, r1, r2, vol, &d) == CB_OK) reach = MAX(reach, d);
+      double reach = 0.0;
+      if (cb_reach(law(i, j), cb_radius_range{r1, r1}, cb_radius_range{r2, r2},
+                   design_volume(i, j), nullptr, &reach, nullptr) == CB_OK)
+        largest = MAX(largest, reach);
     }
-  return r1 + r2 + reach * (1.0 + REACH_MARGIN);
+  return r1 + r2 + largest;
 }
 
 double PairGranCapillary::atom2cut(int i)
@@ -179,34 +160,31 @@ double PairGranCapillary::atom2cut(int i)
 
 void PairGranCapillary::check_periodic_images()
 {
-  // The pair history, and with it every bridge, is kept per pair of atom IDs.  In a
-  // periodic box narrower than twice the neighbor cutoff, the same two atoms can meet as
-  // two periodic images in one neighbor list, and each image would get a copy of their
-  // bridge: liquid out of nothing.  Widths between opposite faces (triclinic: 1 / |row of
-  // the inverse box matrix|).
-  const double *h_inv = domain->h_inv;
-  const double width[3] = {
-      1.0 / sqrt(h_inv[0] * h_inv[0] + h_inv[5] * h_inv[5] + h_inv[4] * h_inv[4]),
-      1.0 / sqrt(h_inv[1] * h_inv[1] + h_inv[3] * h_inv[3]), 1.0 / h_inv[2]};
+  // The pair history, and with it every bridge, is kept per pair of atom IDs: in a
+  // periodic box too narrow for the neighbor cutoff (cb_periodic_too_narrow) the same two
+  // atoms can meet as two periodic images, each with a copy of their bridge.
+  double width[3];
+  cb_cell_widths(domain->h_inv, width);
   const int periodic[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
   const double cutoff = neighbor->cutneighmax;
-  for (int d = 0; d < 3; d++)
-    if (periodic[d] && width[d] < 2.0 * cutoff)
-      error->all(FLERR, "pair gran/capillary: the periodic box is {:.6g} wide along {}, less "
-                 "than twice the neighbor cutoff {:.6g} (the largest bridge reach plus the "
-                 "skin): two atoms would meet as two periodic images, each holding a copy of "
-                 "their bridge.  Make the box at least {:.6g} wide along {} (or lower the "
-                 "skin, or the bridge volume the reach is built for)",
-                 width[d], "xyz"[d], cutoff, 2.0 * cutoff, "xyz"[d]);
+  const int d = cb_periodic_too_narrow(width, periodic, cutoff);
+  if (d >= 0)
+    error->all(FLERR, "pair gran/capillary: the periodic box is {:.6g} wide along {}, less "
+               "than twice the neighbor cutoff {:.6g} (the largest bridge reach plus the "
+               "skin): two atoms would meet as two periodic images, each holding a copy of "
+               "their bridge.  Make the box at least {:.6g} wide along {} (or lower the "
+               "skin, or the bridge volume the reach is built for)",
+               width[d], "xyz"[d], cutoff, 2.0 * cutoff, "xyz"[d]);
 }
 
 /* ----------------------------------------------------------------------
-   time-step check, at setup and after every re-neighboring, warns once:
-   dt > 0.1 pi sqrt(m_min / k), k the larger of k_n and the capillary stiffness bound
-   (cb_capillary_stiffness_bound over the radius ranges and the bridge volumes in use).
+   time-step check, at setup and after every re-neighboring, warns once: dt above the core's
+   limit (cb_timestep_limit: a tenth of pi sqrt(m_min / k), k the larger of k_n and the
+   capillary stiffness bound over the radius ranges and the bridge volumes in use).
    One reduction per call (the smallest mass per type and the volume range per type pair,
-   packed into one MIN); the stiffness bound, ~10^3 force calls per type pair, is evaluated
-   again only when a type pair's volume range has changed (in fixed mode: once per run).
+   packed into one MIN); the limit, ~10^3 force calls per type pair, is evaluated again
+   only when a type pair's volume range or smallest mass has changed (in fixed mode: once
+   per run).
 ------------------------------------------------------------------------- */
 
 void PairGranCapillary::check_timestep()
@@ -218,46 +196,66 @@ void PairGranCapillary::check_timestep()
   const double *mass = timestep_global.data();
   const double *vlo_all = mass + n + 1, *minus_vhi_all = vlo_all + np;
 
-  // the bound per type pair, for the volumes it was last evaluated at
-  if (update->setupflag || bound_volumes.size() != (size_t) (2 * np)) {
-    bound_volumes.assign(2 * np, -1.0);
-    capillary_bound.assign(np, 0.0);
+  // the limit per type pair, for the volumes and the mass it was last evaluated at
+  if (update->setupflag || timestep_key.size() != (size_t) (KEY_SIZE * np)) {
+    timestep_key.assign(KEY_SIZE * np, -1.0);
+    timestep_bound.assign(2 * np, 0.0);
   }
   for (int i = 1; i <= n; i++)
     for (int j = i; j <= n; j++) {
       if (!setflag[i][j] || mass[i] == HUGE_VAL || mass[j] == HUGE_VAL) continue;
       const int ij = i * (n + 1) + j;
-      double volumes[2] = {0.0, 0.0};
+      double key[KEY_SIZE] = {0.0, 0.0, MIN(mass[i], mass[j])};    // two volumes, the mass
       if (liquid_mode == LIQUID_FIXED)
-        volumes[0] = design_volume(i, j);
+        key[0] = design_volume(i, j);
       else if (-minus_vhi_all[ij] > 0.0) {
-        volumes[0] = vlo_all[ij];
-        volumes[1] = -minus_vhi_all[ij];
+        key[0] = vlo_all[ij];
+        key[1] = -minus_vhi_all[ij];
       }
-      if (volumes[0] != bound_volumes[2 * ij] || volumes[1] != bound_volumes[2 * ij + 1]) {
-        capillary_bound[ij] = capillary_stiffness(i, j, volumes);
-        bound_volumes[2 * ij] = volumes[0];
-        bound_volumes[2 * ij + 1] = volumes[1];
+      double *bound = &timestep_bound[2 * ij];    // the limit, the capillary stiffness bound
+      if (!std::equal(key, key + KEY_SIZE, &timestep_key[KEY_SIZE * ij])) {
+        timestep_limit(i, j, key, bound);
+        std::copy(key, key + KEY_SIZE, &timestep_key[KEY_SIZE * ij]);
       }
-      const double m = MIN(mass[i], mass[j]);
-      const double capillary = capillary_bound[ij];
-      const TypePair &tp = type_pair(i, j);
-      const double contact = tp.contact_on ? tp.contact.normal_stiffness : 0.0;
-      const double k = MAX(contact, capillary);
-      if (!(k > 0.0)) continue;
-      const double limit = 0.1 * MY_PI * sqrt(m / k);
       // a deck that sets dt to exactly this limit is within it: allow for its rounding
-      if (update->dt > limit * (1.0 + 1e-12)) {
+      if (update->dt > bound[0] * (1.0 + 1e-12)) {
         dt_warned = 1;
         if (comm->me == 0)
           error->warning(FLERR, "pair gran/capillary: time step {:.6g} s exceeds the limit "
                          "{:.6g} s = 10% of pi sqrt(m/k) for types {} {} (smallest mass "
-                         "m = {:.6g}, k = {:.6g}: the larger of k_n = {:.6g} and "
-                         "the capillary stiffness bound {:.6g}); this warning is given once",
-                         update->dt, limit, i, j, m, k, contact, capillary);
+                         "m = {:.6g}, k the larger of k_n = {:.6g} and the capillary "
+                         "stiffness bound {:.6g}); this warning is given once",
+                         update->dt, bound[0], i, j, key[2], normal_stiffness(i, j), bound[1]);
         return;
       }
     }
+}
+
+/* ----------------------------------------------------------------------
+   the time-step limit of type pair i, j (cb_timestep_limit) for key = the two bridge
+   volumes in use (0: none) and the smallest mass: bound = the limit, the capillary
+   stiffness bound
+------------------------------------------------------------------------- */
+
+void PairGranCapillary::timestep_limit(int i, int j, const double *key, double *bound) const
+{
+  const cb_radius_range range_i = {rad_min[i], rad_max[i]};
+  const cb_radius_range range_j = {rad_min[j], rad_max[j]};
+  const int status = cb_timestep_limit(law(i, j), range_i, range_j, key, 2, key[2],
+                                       normal_stiffness(i, j), &bound[0], &bound[1]);
+  if (status != CB_OK)
+    error->all(FLERR, "pair gran/capillary: types {} {}: no time-step limit for law {} with "
+               "bridges of volume {} to {} between radii {} to {} and {} to {} (smallest "
+               "mass {}): {}", i, j, cb_model_name(law(i, j)->model), key[0], key[1],
+               range_i.min, range_i.max, range_j.min, range_j.max, key[2],
+               cb_status_message((cb_status) status));
+}
+
+// the normal contact stiffness of type pair i, j in the time-step limit (contact none: 0)
+double PairGranCapillary::normal_stiffness(int i, int j) const
+{
+  const TypePair &tp = type_pair(i, j);
+  return tp.contact_on ? tp.contact.normal_stiffness : 0.0;
 }
 
 /* ----------------------------------------------------------------------
@@ -293,27 +291,4 @@ void PairGranCapillary::reduce_timestep_ranges()
   }
   MPI_Allreduce(timestep_local.data(), timestep_global.data(), (int) timestep_local.size(),
                 MPI_DOUBLE, MPI_MIN, world);
-}
-
-/* ----------------------------------------------------------------------
-   the capillary stiffness bound of type pair i, j: the largest over the corners of both
-   radius ranges and the (up to two) bridge volumes given (0: none)
-------------------------------------------------------------------------- */
-
-double PairGranCapillary::capillary_stiffness(int i, int j, const double *volumes) const
-{
-  double capillary = 0.0;
-  const double ri[2] = {rad_min[i], rad_max[i]}, rj[2] = {rad_min[j], rad_max[j]};
-  for (int v = 0; v < 2; v++) {
-    const double vol = volumes[v];
-    if (!(vol > 0.0)) continue;
-    for (double r1 : ri)
-      for (double r2 : rj) {
-        double k = 0.0;
-        if (r1 > 0.0 && r2 > 0.0 &&
-            cb_capillary_stiffness_bound(law(i, j), r1, r2, vol, &k) == CB_OK)
-          capillary = MAX(capillary, k);
-      }
-  }
-  return capillary;
 }

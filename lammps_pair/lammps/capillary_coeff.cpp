@@ -265,7 +265,8 @@ double PairGranCapillary::init_one(int i, int j)
   if (setflag[i][j] == 0)
     error->all(FLERR, "pair gran/capillary: no pair_coeff for types {} {} (coefficients are not "
                "mixed: give every type pair I <= J)", i, j);
-  const double cut = pair_cutoff(i, j);
+  double design_rupture = 0.0;
+  const double cut = pair_cutoff(i, j, design_rupture);
 
   // the pair loops' constants (init() calls init_one for every pair before a run)
   TypePair &tp = type_pairs[i * type_stride + j];
@@ -276,6 +277,7 @@ double PairGranCapillary::init_one(int i, int j)
     error->all(FLERR, "pair gran/capillary: types {} {}: {}", i, j, msg.text);    // (checked by pair_coeff)
   tp.formation_volume = liquid_mode == LIQUID_FIXED ? design_volume(i, j) : 0.0;
   tp.cutsq = cut * cut;
+  tp.design_rupture = design_rupture;
   type_pairs[j * type_stride + i] = tp;
   return cut;
 }

@@ -39,23 +39,6 @@ int sbmask(int j)
   return j >> SBBITS & 3;
 }
 
-// Does a contact at `offset` (contact height minus centre height) beat the current
-// receiver?  The rule is cb_protocol3_receiver's (the lowest contact strictly below the
-// centre); equal heights go to the smaller partner tag so that the choice does not
-// depend on the order in which ranks and neighbor lists present the bridges.
-bool better_receiver(double offset, tagint partner, double best_offset, tagint best_partner)
-{
-  double heights[2];
-  size_t n = 0;
-  if (best_partner) heights[n++] = best_offset;
-  heights[n++] = offset;
-  long index = -1;
-  if (cb_protocol3_receiver(0.0, heights, n, &index) != CB_OK) return false;
-  if (index < 0) return false;
-  if (n == 1) return true;
-  if (index == 1) return true;
-  return offset == best_offset && partner < best_partner;
-}
 }    // namespace
 
 // Protocol 1's candidates on this rank: the wet pairs within reach, in list order
@@ -111,7 +94,8 @@ void FixCapillaryLiquid::offer_liquid()
                       the split in proportion to the radii, exact)
      candidates[a]    dry pairs of atom a in contact that may form a bridge now
      best_height[a], best_partner[a]   Protocol 3: atom a's lowest bridge below its centre
-                      (contact height minus centre height, and the partner's tag)
+                      (contact height minus centre height, and the partner's tag; the
+                      receiver rule and its tie-break are cb_protocol3_better's)
    With newton on a pair is seen by one rank only, which records both atoms (ghost
    entries go back to their owners by reverse communication).  With newton off a pair
    with a ghost partner is seen by both owners: each records its own atom only.
@@ -198,9 +182,9 @@ void FixCapillaryLiquid::advance_and_release(int i, int j, double rsq, double ga
                     bridge->volume, gap);
   if (transition != CB_BRIDGE_RUPTURED) {
     vol = 0.0;
-    if (rsq >= tp.cutsq) {
-      // held beyond the reach (a volume above the one the reach was built for):
-      // ruptured here, before the pair leaves the neighbor list with its liquid
+    if (CapillaryBridges::beyond_reach(rsq, gap, tp)) {
+      // held beyond the reach (a volume above the one the reach was built for, a grown
+      // sphere): ruptured here, before the pair leaves the neighbor list with its liquid
       vol = bridge->volume;
       *bridge = cb_bridge{};
       if (counted) bridges->n_reach += 1.0;
@@ -227,13 +211,13 @@ void FixCapillaryLiquid::receive_at(int i, int j, double delz, double r)
   tagint *tag = atom->tag;
   // contact point on sphere a: centre + r_a (partner - centre) / r
   const double offset_i = -radius[i] * delz / r;
-  if (better_receiver(offset_i, tag[j], best_height[i], best_partner[i])) {
+  if (cb_protocol3_better(offset_i, tag[j], best_height[i], best_partner[i])) {
     best_height[i] = offset_i;
     best_partner[i] = tag[j];
   }
   if (force->newton_pair || j < atom->nlocal) {
     const double offset_j = radius[j] * delz / r;
-    if (better_receiver(offset_j, tag[i], best_height[j], best_partner[j])) {
+    if (cb_protocol3_better(offset_j, tag[i], best_height[j], best_partner[j])) {
       best_height[j] = offset_j;
       best_partner[j] = tag[i];
     }
@@ -245,11 +229,12 @@ void FixCapillaryLiquid::receive_at(int i, int j, double delz, double r)
    1. newton on: ghost entries (released shares, candidate counts, receivers) are summed
       (merged) into the owners by reverse communication, so each atom's owner knows all
       of it; newton off: each owner recorded its own atoms already.
-   2. the owner of atom a: Protocol 3 with a receiver: deposit[a] = released[a] (goes to
-      that bridge); else free[a] += released[a].  Then, if a has candidates,
-      offer[a] = free[a] / candidates[a] and free[a] = 0: the whole free liquid is handed
-      out, an equal part to each new contact (Richefeu's "the new bridge takes it" with
-      several new contacts at once; cb_protocol2_take adds the two offers of a pair).
+   2. the owner of atom a, the core's rule (cb_protocol_grain_step): Protocol 3 with a
+      receiver: deposit[a] = released[a] (goes to that bridge); else free[a] +=
+      released[a].  Then, if a has k candidates, offer[a] = free[a] / k and free[a] = 0:
+      the whole free liquid is handed out, an equal part to each new contact (Richefeu's
+      "the new bridge takes it" with several new contacts at once; cb_protocol2_take adds
+      the two offers of a pair).
    3. forward communication gives every ghost its owner's offer, deposit and receiver, so
       that both ranks of a newton-off pair form the bridge with the same volume
       offer[i] + offer[j], and the receiving bridge (on whichever rank holds it) gets the
@@ -265,17 +250,14 @@ void FixCapillaryLiquid::exchange_liquid()
   if (force->newton_pair) comm->reverse_comm(this);
   const int protocol3 = mode == LIQUID_PROTOCOL3;
   for (int a = 0; a < atom->nlocal; a++) {
-    if (released[a] > 0.0) {
-      if (protocol3 && best_partner[a] != 0)
-        deposit[a] = released[a];
-      else
-        free_liquid[a] += released[a];
-    }
-    if (candidates[a] > 0.0 && free_liquid[a] > 0.0) {
-      offer[a] = free_liquid[a] / candidates[a];
-      free_liquid[a] = 0.0;
-    } else
-      offer[a] = 0.0;
+    const int status = cb_protocol_grain_step(released[a], protocol3 && best_partner[a] != 0,
+                                              candidates[a], &free_liquid[a], &deposit[a],
+                                              &offer[a]);
+    if (status != CB_OK)
+      error->one(FLERR, "fix capillary/liquid {}: atom {}: the liquid of one step "
+                 "(cb_protocol_grain_step: released {}, free {}, {} new contacts): {}",
+                 mode_name(), atom->tag[a], released[a], free_liquid[a], candidates[a],
+                 cb_status_message((cb_status) status));
   }
   comm->forward_comm(this);
 }
@@ -306,7 +288,7 @@ void FixCapillaryLiquid::unpack_reverse_comm(int n, int *list_, double *buf)
     released[a] += buf[m++];
     const double height = buf[m++];
     const auto partner = (tagint) ubuf(buf[m++]).i;
-    if (partner && better_receiver(height, partner, best_height[a], best_partner[a])) {
+    if (partner && cb_protocol3_better(height, partner, best_height[a], best_partner[a])) {
       best_height[a] = height;
       best_partner[a] = partner;
     }

@@ -252,7 +252,7 @@ void FixCapillaryLiquid::init()
 }
 
 /* ----------------------------------------------------------------------
-   the total liquid and the design volume, fixed at their first use (collective)
+   the total liquid, fixed at its first use (collective)
 ------------------------------------------------------------------------- */
 
 void FixCapillaryLiquid::ensure_totals()
@@ -270,31 +270,47 @@ void FixCapillaryLiquid::ensure_totals()
                      water >= 0.0 ? "water content" : "liquid", asked);
     total_from_restart = 0;
   }
-  if (vmax_given > 0.0) vmax = vmax_given;
-  if (vmax < 0.0) {
-    // default: twice the mean liquid per particle, times the cube of the size ratio, i.e.
-    // the Protocol 1 bridge volume of the largest spheres when there is at least one bridge
-    // per particle
-    double lo = HUGE_VAL, hi = 0.0, lo_all = HUGE_VAL, hi_all = 0.0;
-    for (int i = 0; i < atom->nlocal; i++)
-      if (atom->mask[i] & groupbit) {
-        lo = MIN(lo, atom->radius[i]);
-        hi = MAX(hi, atom->radius[i]);
-      }
-    MPI_Allreduce(&lo, &lo_all, 1, MPI_DOUBLE, MPI_MIN, world);
-    MPI_Allreduce(&hi, &hi_all, 1, MPI_DOUBLE, MPI_MAX, world);
-    const bigint count = group->count(igroup);
-    if (count > 0 && lo_all > 0.0) {
-      const double ratio = hi_all / lo_all;
-      vmax = 2.0 * total_liquid / (double) count * ratio * ratio * ratio;
-    } else
-      vmax = total_liquid;
-  }
 }
 
-double FixCapillaryLiquid::reach_volume()
+/* ----------------------------------------------------------------------
+   the design volume of this run's neighbor reach (collective; called by the pair's
+   init_style, so once per run that builds its reach): vmax as given, else the core's
+   (cb_protocol_design_volume) for the liquid, the group's atoms and radius range, and the
+   largest free liquid of one atom now
+------------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::derive_design_volume()
 {
   ensure_totals();
+  if (mode == LIQUID_FIXED) return;
+  if (vmax_given > 0.0) {
+    vmax = vmax_given;
+    return;
+  }
+  double lo = HUGE_VAL, hi = 0.0, most_free = 0.0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) {
+      lo = MIN(lo, atom->radius[i]);
+      hi = MAX(hi, atom->radius[i]);
+      if (free_liquid) most_free = MAX(most_free, free_liquid[i]);
+    }
+  double local[2] = {-lo, hi}, all[2], most_free_all = 0.0;
+  MPI_Allreduce(local, all, 2, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(&most_free, &most_free_all, 1, MPI_DOUBLE, MPI_MAX, world);
+  const cb_radius_range radii = {-all[0], all[1]};
+  const auto grains = (double) group->count(igroup);
+  const int status =
+      cb_protocol_design_volume(total_liquid, grains, radii, most_free_all, &vmax);
+  if (status != CB_OK)
+    error->all(FLERR, "fix capillary/liquid {}: no design volume for the neighbor reach "
+               "(liquid {:.6g} in {:.0f} atoms of radii {:.6g} to {:.6g}, largest free liquid "
+               "{:.6g}): {}; the default needs atoms with a radius > 0 in the group at the "
+               "start of the run: give vmax V", mode_name(), total_liquid, grains, radii.min,
+               radii.max, most_free_all, cb_status_message((cb_status) status));
+}
+
+double FixCapillaryLiquid::reach_volume() const
+{
   return MAX(vmax, 0.0);
 }
 
@@ -487,7 +503,8 @@ void FixCapillaryLiquid::restart(char *buf)
                "gives {}", capillary_liquid_mode_name((int) list[0]), mode_name());
   total_liquid = list[1];
   total_from_restart = 1;
-  vmax = vmax_given > 0.0 ? vmax_given : list[2];
+  // list[2], the design volume of the run that wrote the file, is not read: each run
+  // derives its own (derive_design_volume), from the liquid and the atoms read here
   pool = list[3];
   alpha = list[4];
   started = (int) list[5];

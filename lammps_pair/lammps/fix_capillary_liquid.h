@@ -66,7 +66,10 @@ class FixCapillaryLiquid : public Fix {
   int mode;               // CapillaryLiquidMode
   double fixed_volume;    // mode fixed: the bridge volume (< 0: from pair_coeff)
   const char *mode_name() const { return capillary_liquid_mode_name(mode); }
-  double reach_volume();    // vmax: the largest bridge volume the neighbor reach is built for
+  // the design volume of this run's neighbor reach, vmax: derived by the pair's init_style
+  // (collective), read by its init_one and the fix's Protocol 1
+  void derive_design_volume();
+  double reach_volume() const;
   // Protocols 2, 3, phase 1 of a force evaluation (the pair's compute(), before its loop):
   // the bridges advanced, their released liquid handed to the atoms, the free liquid offered
   void offer_liquid();
@@ -85,7 +88,7 @@ class FixCapillaryLiquid : public Fix {
 
   // persistent state (global restart)
   double total_liquid;    // the liquid, fixed at the first run [m^3]; < 0 until then
-  double vmax;            // design volume in use; < 0 until computed
+  double vmax;            // the design volume of this run (derive_design_volume); < 0 before
   double pool;            // Protocol 1: liquid of broken bridges until the next distribution
   double alpha;           // the last Protocol 1 factor (V_b = alpha R_g^3)
   int started;            // the initial distribution is done

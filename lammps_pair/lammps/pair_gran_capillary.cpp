@@ -207,6 +207,7 @@ void PairGranCapillary::find_liquid()
   fix_liquid = liquids.empty() ? nullptr : dynamic_cast<FixCapillaryLiquid *>(liquids.front());
   liquid_mode = fix_liquid ? fix_liquid->mode : LIQUID_FIXED;
   liquid_groupbit = fix_liquid ? fix_liquid->groupbit : 0;
+  if (fix_liquid) fix_liquid->derive_design_volume();    // the reach of this run (init_one)
 
   const int n = atom->ntypes;
   for (int i = 1; i <= n; i++)
@@ -269,17 +270,7 @@ void PairGranCapillary::compute(int eflag, int vflag)
 template <bool BRIDGES> void PairGranCapillary::form_bridges_and_forces()
 {
   const int history_update = update->setupflag ? 0 : 1;
-  AtomArrays a;
-  a.x = atom->x;
-  a.v = atom->v;
-  a.f = atom->f;
-  a.omega = atom->omega;
-  a.torque = atom->torque;
-  a.radius = atom->radius;
-  a.rmass = atom->rmass;
-  a.mask = atom->mask;
-  a.nlocal = atom->nlocal;
-  a.newton_pair = force->newton_pair;
+  const AtomArrays a = atom_arrays();
   double **x = a.x;
   double *radius = a.radius;
   int *type = atom->type;
@@ -303,20 +294,7 @@ template <bool BRIDGES> void PairGranCapillary::form_bridges_and_forces()
     double *allhistory = firstvalue[i];
     const int jnum = numneigh[i];
     for (int jj = 0;; jj++) {
-      // Skip to the next pair to compute.  Apart, neither touching nor bridged at the last
-      // step is the common case: no force, and no bridge can form (only at contact); its
-      // history is all zero (see pair_force), so it is neither read nor written.  A loop
-      // of its own, so that the compiler keeps its few values in registers: inside the
-      // pair loop they were spilled around the pair's work, ~48 instructions a skipped
-      // pair; this way 3 % fewer instructions in the whole run (callgrind, bench/README.md)
-      for (; jj < jnum; jj++) {
-        if (touch[jj] != 0) break;
-        const int k = jlist[jj] & NEIGHMASK;
-        const double dx = x[i][0] - x[k][0];
-        const double dy = x[i][1] - x[k][1];
-        const double dz = x[i][2] - x[k][2];
-        if (!cb_certainly_apart(dx * dx + dy * dy + dz * dz, radius[i] + radius[k])) break;
-      }
+      jj = skip_apart(a, i, jlist, touch, jj, jnum);
       if (jj >= jnum) break;
       int j = jlist[jj];
       const double factor_lj = special[sbmask(j)];
@@ -326,34 +304,85 @@ template <bool BRIDGES> void PairGranCapillary::form_bridges_and_forces()
       const double dely = x[i][1] - x[j][1];
       const double delz = x[i][2] - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
-      const double radsum = radius[i] + radius[j];
       double *history = &allhistory[stride * jj];
-      cb_bridge *bridge = bridge_of(history);
-      const int jtype = type[j];
       const double r = sqrt(rsq);
-      const double gap = r - radsum;
-      const TypePair &tp = type_pair(itype, jtype);
-      const cb_law *pair_law = tp.law;
-      double capillary = 0.0;
+      const double gap = r - (radius[i] + radius[j]);
+      const TypePair &tp = type_pair(itype, type[j]);
       // (a run in which no type pair can hold a bridge: the contact forces alone)
-      if (BRIDGES) {
-        // The common case, a bridge held (in contact, or a richefeu bridge stretched within
-        // its rupture distance), gives its force from the stored constants, inline (within
-        // the reach: one held beyond it is ruptured by advance_bridge).  The rest is out of
-        // line: inlined, it made the compiler spill the contact force code's values, ~3 %
-        // more instructions and time in the wet loop (bench/README.md).  Dry pairs that
-        // cannot get a bridge skip both.
-        if (per_atom)
-          capillary = protocol_bridge(i, j, gap, tp, bridge);
-        else if (!(rsq < tp.cutsq &&
-                   cb_bridge_held(pair_law, radius[i], radius[j], gap, bridge, &capillary)) &&
-                 (bridge->active != 0.0 || (tp.formation_volume > 0.0 && wet_pair(i, j, tp))))
-          capillary = advance_bridge(i, j, rsq, gap, tp, bridge);
-      }
+      const double capillary =
+          BRIDGES ? bridge_capillary(i, j, rsq, gap, tp, bridge_of(history), per_atom) : 0.0;
       pair_force<BRIDGES>(a, tp, i, j, delx, dely, delz, rsq, r, gap, capillary, history,
                           touch[jj], history_update);
     }
   }
+}
+
+/* ----------------------------------------------------------------------
+   the per-atom arrays of one force evaluation
+------------------------------------------------------------------------- */
+
+PairGranCapillary::AtomArrays PairGranCapillary::atom_arrays() const
+{
+  AtomArrays a;
+  a.x = atom->x;
+  a.v = atom->v;
+  a.f = atom->f;
+  a.omega = atom->omega;
+  a.torque = atom->torque;
+  a.radius = atom->radius;
+  a.rmass = atom->rmass;
+  a.mask = atom->mask;
+  a.nlocal = atom->nlocal;
+  a.newton_pair = force->newton_pair;
+  return a;
+}
+
+/* ----------------------------------------------------------------------
+   the pair loop's skip to the next pair to compute, from neighbor jj of atom i (returns
+   jnum when none is left).  Apart, neither touching nor bridged at the last step is the
+   common case: no force, and no bridge can form (only at contact); its history is all
+   zero (see pair_force), so it is neither read nor written.  A loop of its own, so that
+   the compiler keeps its few values in registers: inside the pair loop they were spilled
+   around the pair's work, ~48 instructions a skipped pair; this way 3 % fewer
+   instructions in the whole run (callgrind, bench/README.md)
+------------------------------------------------------------------------- */
+
+int PairGranCapillary::skip_apart(const AtomArrays &a, int i, const int *jlist,
+                                  const int *touch, int jj, int jnum)
+{
+  double **x = a.x;
+  double *radius = a.radius;
+  for (; jj < jnum; jj++) {
+    if (touch[jj] != 0) break;
+    const int k = jlist[jj] & NEIGHMASK;
+    const double dx = x[i][0] - x[k][0];
+    const double dy = x[i][1] - x[k][1];
+    const double dz = x[i][2] - x[k][2];
+    if (!cb_certainly_apart(dx * dx + dy * dy + dz * dz, radius[i] + radius[k])) break;
+  }
+  return jj;
+}
+
+/* ----------------------------------------------------------------------
+   the capillary force of a pair of a run that can hold bridges, its bridge advanced.
+   The common case, a bridge held (in contact, or a richefeu bridge stretched within its
+   rupture distance), gives its force from the stored constants, inline (within the reach:
+   one held beyond it is ruptured by advance_bridge).  The rest is out of line: inlined, it
+   made the compiler spill the contact force code's values, ~3 % more instructions and
+   time in the wet loop (bench/README.md).  Dry pairs that cannot get a bridge skip both.
+------------------------------------------------------------------------- */
+
+double PairGranCapillary::bridge_capillary(int i, int j, double rsq, double gap,
+                                           const TypePair &tp, cb_bridge *bridge, int per_atom)
+{
+  if (per_atom) return protocol_bridge(i, j, gap, tp, bridge);
+  double *radius = atom->radius;
+  double capillary = 0.0;
+  if (!(!beyond_reach(rsq, gap, tp) &&
+        cb_bridge_held(tp.law, radius[i], radius[j], gap, bridge, &capillary)) &&
+      (bridge->active != 0.0 || (tp.formation_volume > 0.0 && wet_pair(i, j, tp))))
+    capillary = advance_bridge(i, j, rsq, gap, tp, bridge);
+  return capillary;
 }
 
 /* ----------------------------------------------------------------------
@@ -432,9 +461,9 @@ double PairGranCapillary::advance_bridge(int i, int j, double rsq, double gap,
   if (transition == CB_BRIDGE_FORMED && counted(i, j)) n_formed += 1.0;
   if (transition == CB_BRIDGE_RUPTURED && counted(i, j)) n_ruptured += 1.0;
   if (transition != CB_BRIDGE_RUPTURED) vol = 0.0;
-  if (bridge->active != 0.0 && rsq >= tp.cutsq) {
-    // held beyond the reach (a volume above the one the reach was built for):
-    // ruptured here, before the pair leaves the neighbor list with its liquid
+  if (bridge->active != 0.0 && beyond_reach(rsq, gap, tp)) {
+    // held beyond the reach (a volume above the one the reach was built for, a grown
+    // sphere): ruptured here, before the pair leaves the neighbor list with its liquid
     vol = bridge->volume;
     *bridge = cb_bridge{};
     capillary = 0.0;
@@ -458,15 +487,6 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
                                    double gap, double capillary, double *history, int &touch,
                                    int history_update)
 {
-  double **v = a.v;
-  double **f = a.f;
-  double **omega = a.omega;
-  double **torque = a.torque;
-  double *rmass = a.rmass;
-  int *mask = a.mask;
-  const int nlocal = a.nlocal;
-  const int newton_pair = a.newton_pair;
-  const double radi = a.radius[i], radj = a.radius[j];
   cb_bridge *bridge = bridge_of(history);
   double *shear = &history[HIST_SHEAR];
 
@@ -482,53 +502,82 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
   }
 
   if (r == 0.0) coincident_atoms(i, j);
+  const double del[3] = {delx, dely, delz};
   const double rinv = 1.0 / r;
   double contact = 0.0;
-  double fs1 = 0.0, fs2 = 0.0, fs3 = 0.0;
-  if (in_contact) {
-    const double vr1 = v[i][0] - v[j][0];
-    const double vr2 = v[i][1] - v[j][1];
-    const double vr3 = v[i][2] - v[j][2];
-    const double vnnr = vr1 * delx + vr2 * dely + vr3 * delz;
-    const double gap_rate = vnnr * rinv;
+  double fs[3] = {0.0, 0.0, 0.0};
+  if (in_contact)
+    contact = contact_force(a, tp, i, j, del, rsq, rinv, gap, shear, history_update, fs);
+  apply_pair_force(a, i, j, del, rinv, (contact - capillary) * rinv, fs);
+}
 
-    double mi = rmass[i], mj = rmass[j];
-    double meff = mi * mj / (mi + mj);
-    if (mask[i] & freeze_group_bit) meff = mj;
-    if (mask[j] & freeze_group_bit) meff = mi;
-    contact = cb_contact_normal_force(&tp.contact, gap, gap_rate, sqrt(meff));    // eqs. 2, 3
+/* ----------------------------------------------------------------------
+   a pair in contact: its normal contact force (returned; Richefeu 2007 eqs. 2, 3) and the
+   tangential spring's force fs (eq. 12), the spring's displacement advanced if
+   history_update
+------------------------------------------------------------------------- */
 
-    // relative tangential velocity at the contact point
-    const double rsqinv = 1.0 / rsq;
-    const double vt1 = vr1 - delx * vnnr * rsqinv;
-    const double vt2 = vr2 - dely * vnnr * rsqinv;
-    const double vt3 = vr3 - delz * vnnr * rsqinv;
-    const double wr1 = (radi * omega[i][0] + radj * omega[j][0]) * rinv;
-    const double wr2 = (radi * omega[i][1] + radj * omega[j][1]) * rinv;
-    const double wr3 = (radi * omega[i][2] + radj * omega[j][2]) * rinv;
-    const double vtr1 = vt1 - (delz * wr2 - dely * wr3);
-    const double vtr2 = vt2 - (delx * wr3 - delz * wr1);
-    const double vtr3 = vt3 - (dely * wr1 - delx * wr2);
+double PairGranCapillary::contact_force(const AtomArrays &a, const TypePair &tp, int i, int j,
+                                        const double *del, double rsq, double rinv,
+                                        double gap, double *shear, int history_update,
+                                        double *fs)
+{
+  double **v = a.v;
+  double **omega = a.omega;
+  const double radi = a.radius[i], radj = a.radius[j];
+  const double delx = del[0], dely = del[1], delz = del[2];
+  const double vr1 = v[i][0] - v[j][0];
+  const double vr2 = v[i][1] - v[j][1];
+  const double vr3 = v[i][2] - v[j][2];
+  const double vnnr = vr1 * delx + vr2 * dely + vr3 * delz;
+  const double gap_rate = vnnr * rinv;
 
-    if (history_update) {
-      shear[0] += vtr1 * dt;
-      shear[1] += vtr2 * dt;
-      shear[2] += vtr3 * dt;
-      // keep the displacement in the current tangent plane
-      const double normal_part = (shear[0] * delx + shear[1] * dely + shear[2] * delz) * rsqinv;
-      shear[0] -= normal_part * delx;
-      shear[1] -= normal_part * dely;
-      shear[2] -= normal_part * delz;
-    }
-    double fs[3];
-    cb_contact_tangential_force(&tp.contact, cb_contact_friction_limit(&tp.contact, contact),
-                                shear, fs, history_update);    // eq. 12
-    fs1 = fs[0];
-    fs2 = fs[1];
-    fs3 = fs[2];
+  double mi = a.rmass[i], mj = a.rmass[j];
+  double meff = mi * mj / (mi + mj);
+  if (a.mask[i] & freeze_group_bit) meff = mj;
+  if (a.mask[j] & freeze_group_bit) meff = mi;
+  const double contact = cb_contact_normal_force(&tp.contact, gap, gap_rate, sqrt(meff));
+
+  // relative tangential velocity at the contact point
+  const double rsqinv = 1.0 / rsq;
+  const double vt1 = vr1 - delx * vnnr * rsqinv;
+  const double vt2 = vr2 - dely * vnnr * rsqinv;
+  const double vt3 = vr3 - delz * vnnr * rsqinv;
+  const double wr1 = (radi * omega[i][0] + radj * omega[j][0]) * rinv;
+  const double wr2 = (radi * omega[i][1] + radj * omega[j][1]) * rinv;
+  const double wr3 = (radi * omega[i][2] + radj * omega[j][2]) * rinv;
+  const double vtr1 = vt1 - (delz * wr2 - dely * wr3);
+  const double vtr2 = vt2 - (delx * wr3 - delz * wr1);
+  const double vtr3 = vt3 - (dely * wr1 - delx * wr2);
+
+  if (history_update) {
+    shear[0] += vtr1 * dt;
+    shear[1] += vtr2 * dt;
+    shear[2] += vtr3 * dt;
+    // keep the displacement in the current tangent plane
+    const double normal_part = (shear[0] * delx + shear[1] * dely + shear[2] * delz) * rsqinv;
+    shear[0] -= normal_part * delx;
+    shear[1] -= normal_part * dely;
+    shear[2] -= normal_part * delz;
   }
+  cb_contact_tangential_force(&tp.contact, cb_contact_friction_limit(&tp.contact, contact),
+                              shear, fs, history_update);
+  return contact;
+}
 
-  const double ccel = (contact - capillary) * rinv;
+/* ----------------------------------------------------------------------
+   a pair's force on i and j: ccel along del (the normal force over r; rinv = 1 / r), fs at
+   the contact point (with its torques), and the tally
+------------------------------------------------------------------------- */
+
+void PairGranCapillary::apply_pair_force(const AtomArrays &a, int i, int j, const double *del,
+                                         double rinv, double ccel, const double *fs)
+{
+  double **f = a.f;
+  double **torque = a.torque;
+  const double delx = del[0], dely = del[1], delz = del[2];
+  const double fs1 = fs[0], fs2 = fs[1], fs3 = fs[2];
+  const double radi = a.radius[i], radj = a.radius[j];
   const double fx = delx * ccel + fs1;
   const double fy = dely * ccel + fs2;
   const double fz = delz * ccel + fs3;
@@ -541,7 +590,7 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
   torque[i][0] -= radi * tor1;
   torque[i][1] -= radi * tor2;
   torque[i][2] -= radi * tor3;
-  if (newton_pair || j < nlocal) {
+  if (a.newton_pair || j < a.nlocal) {
     f[j][0] -= fx;
     f[j][1] -= fy;
     f[j][2] -= fz;
@@ -549,7 +598,7 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
     torque[j][1] -= radj * tor2;
     torque[j][2] -= radj * tor3;
   }
-  if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+  if (evflag) ev_tally_xyz(i, j, a.nlocal, a.newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
 }
 
 /* ----------------------------------------------------------------------

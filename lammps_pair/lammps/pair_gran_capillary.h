@@ -91,9 +91,11 @@ class PairGranCapillary : public Pair, public CapillaryBridges {
   std::vector<double> held_volume;    // per type: the largest bridge that exists (init_style)
 
   int dt_warned, reach_warned;
-  // check_timestep(): its reduction buffers, and the capillary stiffness bound per type pair
-  // with the two volumes it was evaluated at
-  std::vector<double> timestep_local, timestep_global, bound_volumes, capillary_bound;
+  // check_timestep(): its reduction buffers, and per type pair the limit and the capillary
+  // stiffness bound (timestep_bound) with the two volumes and the mass they are for
+  // (timestep_key, KEY_SIZE each)
+  enum { KEY_SIZE = 3 };
+  std::vector<double> timestep_local, timestep_global, timestep_key, timestep_bound;
   int neighprev;
 
   void allocate();
@@ -117,17 +119,37 @@ class PairGranCapillary : public Pair, public CapillaryBridges {
   void derive_bridges();
   // BRIDGES false: a run without bridges (bridges_possible 0)
   template <bool BRIDGES> void form_bridges_and_forces();
+  // the pair loop's steps, inline in it (as one function they were: its registers, its
+  // instruction count)
+  AtomArrays atom_arrays() const;
+  __attribute__((always_inline)) inline static int skip_apart(const AtomArrays &a, int i,
+                                                               const int *jlist,
+                                                               const int *touch, int jj,
+                                                               int jnum);
+  __attribute__((always_inline)) inline double bridge_capillary(int i, int j, double rsq,
+                                                                double gap, const TypePair &tp,
+                                                                cb_bridge *bridge,
+                                                                int per_atom);
   template <bool BRIDGES>
   void pair_force(const AtomArrays &a, const TypePair &tp, int i, int j, double delx,
                   double dely, double delz, double rsq, double r, double gap, double capillary,
                   double *history, int &touch, int history_update);
+  __attribute__((always_inline)) inline double
+  contact_force(const AtomArrays &a, const TypePair &tp, int i, int j, const double *del,
+                double rsq, double rinv, double gap, double *shear, int history_update,
+                double *fs);
+  __attribute__((always_inline)) inline void apply_pair_force(const AtomArrays &a, int i, int j,
+                                                              const double *del, double rinv,
+                                                              double ccel, const double *fs);
   void check_periodic_images();
   void check_timestep();
   void reduce_timestep_ranges();
-  double capillary_stiffness(int i, int j, const double *volumes) const;
+  void timestep_limit(int i, int j, const double *key, double *bound) const;
+  double normal_stiffness(int i, int j) const;
   void radius_ranges();
-  double max_rupture(int itype, int jtype, double vol) const;
-  double pair_cutoff(int itype, int jtype);
+  void type_pair_reach(int itype, int jtype, double volume, double &design_rupture,
+                       double &reach) const;
+  double pair_cutoff(int itype, int jtype, double &design_rupture);
   double *find_history(int i, int j, double *negate);
   void parse_coeff(int ilo, int ihi, int jlo, int jhi, int narg, char **arg);
   int parse_contact(const std::string &where, int narg, char **arg, TypePair &tp);

@@ -12,8 +12,9 @@
 #  - a bridge keeps its own rupture distance when the volume is lowered between runs (the
 #    reach covers the bridges that exist); one that reaches the cutoff (a growing sphere)
 #    ruptures there, with a warning;
-#  - the neighbor reach: LAMMPS's neighbor cutoff is r1 + r2 + the rupture distance of
-#    the bridge volume in use (fixed: the pair_coeff volume; a protocol: vmax) + skin.
+#  - the neighbor reach: LAMMPS's neighbor cutoff is r1 + r2 + the core's reach (the rupture
+#    distance of the bridge volume in use, fixed: the pair_coeff volume; a protocol: vmax,
+#    plus 5 %) + skin.
 . "$(dirname "$0")/lib.sh" "$@"
 
 # richefeu, R = 1 mm, gamma 0.0728, theta 0: f_capillary at contact = 2 pi gamma R
@@ -207,11 +208,12 @@ reach() {
         >/dev/null 2>&1 || { fail "reach $label: LAMMPS failed: $(grep -h -m1 ERROR "$log"*)"; return; }
     got=$(sed -n 's/.*master list distance cutoff = //p' "$log" | head -1)
     close_rel "reach $label: neighbor cutoff" "$got" "$expected" 1e-7
-    echo "reach $label: neighbor cutoff $got m, r1 + r2 + rupture distance + skin = $expected m"
+    echo "reach $label: neighbor cutoff $got m, r1 + r2 + 1.05 rupture distance + skin = $expected m"
 }
-# richefeu: rupture distance (1 + theta/2) V^(1/3) (Lian, Richefeu 2007 eq. 6); skin 1e-4
-reach fixed "$(awk 'BEGIN { printf "%.17g", 2e-3 + exp(log(1e-11) / 3) + 1e-4 }')" -var vkw "volume 1e-11"
-reach protocol2 "$(awk 'BEGIN { printf "%.17g", 2e-3 + exp(log(3e-11) / 3) + 1e-4 }')" \
+# richefeu: rupture distance (1 + theta/2) V^(1/3) (Lian, Richefeu 2007 eq. 6), the reach 5 %
+# beyond it (the core's CB_REACH_MARGIN); skin 1e-4
+reach fixed "$(awk 'BEGIN { printf "%.17g", 2e-3 + 1.05 * exp(log(1e-11) / 3) + 1e-4 }')" -var vkw "volume 1e-11"
+reach protocol2 "$(awk 'BEGIN { printf "%.17g", 2e-3 + 1.05 * exp(log(3e-11) / 3) + 1e-4 }')" \
     -var vkw " " -var fixmode protocol2 -var fixargs "liquid 1e-11 vmax 3e-11"
 reach dry "$(awk 'BEGIN { printf "%.17g", 2e-3 + 1e-4 }')" -var vkw "volume 0"
 
