@@ -330,8 +330,12 @@ def write_csv(path, header, rows):
 
 
 def engine_label(P):
-    """The engine, and the LAMMPS contact's dashpot where it is not the default."""
-    return P["engine"] + (" dashpot both" if P.get("dashpot") == "both" else "")
+    """The engine, and the contact where it is not Gladkyy's (dashpot repulsive, overlap none;
+    a run without these parameters predates them: LAMMPS dashpot approach or both, LIGGGHTS
+    its hooke dashpot both ways, both with overlap contact)."""
+    dashpot = P.get("dashpot", "approach" if P["engine"] == "lammps" else "both")
+    label = P["engine"] + ("" if dashpot == "repulsive" else " dashpot " + dashpot)
+    return label + ("" if P.get("overlap", "contact") == "none" else " overlap contact")
 
 
 def label(a):

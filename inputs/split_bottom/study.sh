@@ -5,15 +5,16 @@
 #
 # Usage: inputs/split_bottom/study.sh [-size smoke|default|large|paper] [-engines "lammps liggghts"]
 #                                     [-laws "weigert willett ..."] [-volumes "13.6 74.2"]
-#                                     [-seeds "0 1 2"] [-dashpot both] [-np N] [-publish]
+#                                     [-seeds "0 1 2"] [-dashpot approach|both] [-np N] [-publish]
 #   defaults: -size default, both engines, Gladkyy's four laws (weigert willett
 #   willett/reduced rabinovich) and the other four of capbridge (richefeu
 #   rabinovich/uncorrected soulie table), volumes 13.6 and 74.2 nl, seed 0, -np 2.
 #   -seeds: every run once per seed (params.in: another packing of the same cell); seed 0
 #   is the run named ENGINE-LAW-VOLUME, seed N > 0 adds -seedN to the name.  -volumes ""
-#   runs dry only.  -dashpot both: LAMMPS's contact with the dashpot acting both ways
-#   (Gladkyy's contact, LIGGGHTS's hooke; in.lammps), run names get -both; LIGGGHTS has it
-#   anyway.
+#   runs dry only.  The contact is Gladkyy's (§2: dashpot both ways, never attractive;
+#   in.lammps's dashpot repulsive, in.liggghts's limitForce on); -dashpot approach|both:
+#   LAMMPS's contact with Richefeu's dashpot (approach only) or one that may pull, run names
+#   get -approach or -both; LIGGGHTS keeps Gladkyy's.
 #   The full matrix at default size is 2 engines x 17 runs x ~2 min on 2 idle cores: about 1 h 10 min.
 # With CAPBRIDGE_LOCK=FILE every run holds `flock FILE` (one heavy run at a time on a machine
 # shared by several jobs).
@@ -21,7 +22,7 @@
 # and a finished log is kept: delete it to run again); post.py writes out/split_bottom/study-SIZE/post/.
 set -euo pipefail
 top=$(cd "$(dirname "$0")/../.." && pwd)
-size=default engines="lammps liggghts" np=2 publish=0 seeds=0 dashpot=approach
+size=default engines="lammps liggghts" np=2 publish=0 seeds=0 dashpot=repulsive
 laws="weigert willett willett/reduced rabinovich richefeu rabinovich/uncorrected soulie table"
 volumes="13.6 74.2"
 while [ $# -gt 0 ]; do
@@ -34,10 +35,10 @@ while [ $# -gt 0 ]; do
     -dashpot) dashpot=$2; shift 2 ;;
     -np) np=$2; shift 2 ;;
     -publish) publish=1; shift ;;
-    *) sed -n '6,17p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2 ;;
+    *) sed -n '6,20p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2 ;;
   esac
 done
-case $dashpot in approach|both) ;; *) echo "study.sh: -dashpot takes approach or both, not '$dashpot'" >&2; exit 2 ;; esac
+case $dashpot in repulsive|approach|both) ;; *) echo "study.sh: -dashpot takes repulsive (the default), approach or both, not '$dashpot'" >&2; exit 2 ;; esac
 case $size in smoke|default|large|paper) ;; *) echo "study.sh: -size must be smoke, default, large or paper, not '$size'" >&2; exit 2 ;; esac
 for engine in $engines; do
   case $engine in lammps|liggghts) ;; *) echo "study.sh: unknown engine '$engine' (allowed: lammps, liggghts)" >&2; exit 2 ;; esac
@@ -54,7 +55,7 @@ one() {  # engine law volume seed
   local name="$1-${2//\//_}-$3"
   [ "$3" != 0 ] || name="$1-dry"
   [ "$4" = 0 ] || name="$name-seed$4"
-  [ "$dashpot" = approach ] || [ "$1" != lammps ] || name="$name-$dashpot"
+  [ "$dashpot" = repulsive ] || [ "$1" != lammps ] || name="$name-$dashpot"
   local out="$study/$name"
   runs+=("$out")
   if grep -qs "^SPLIT_BOTTOM_DONE" "$out"/log.*; then
