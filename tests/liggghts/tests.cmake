@@ -84,9 +84,15 @@ add_test(NAME liggghts_protocol1_reference
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/protocol1_reference.py
                  $<TARGET_FILE:liggghts_protocol1_reference> ${CAPBRIDGE_LIGGGHTS_ENV}
                  --workdir ${_liggghts_work}/protocol1_reference)
+# Protocols 1, 2, 3 across write_restart / read_restart: liquid conserved at every step of
+# both runs; Protocols 2 and 3 resume with the same bridges (1 and 2 ranks)
+add_test(NAME liggghts_protocols_restart
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/protocols_restart.py
+                 ${CAPBRIDGE_LIGGGHTS_ENV} --workdir ${_liggghts_work}/protocols_restart)
 set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts_bad_input
                      liggghts_friction liggghts_held liggghts_beyond_reach
                      liggghts_easo_comparison liggghts_between_runs
                      liggghts_restart liggghts_restart_mpi liggghts_liquid_account
                      liggghts_timestep liggghts_protocols liggghts_protocol1_reference
+                     liggghts_protocols_restart
                      PROPERTIES LABELS "liggghts" TIMEOUT 600)
