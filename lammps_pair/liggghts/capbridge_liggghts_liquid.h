@@ -1,8 +1,9 @@
-/* capbridge_liggghts_liquid.h — the liquid account of `cohesion capillary` under Protocol 2.
+/* capbridge_liggghts_liquid.h — the liquid account of `cohesion capillary` under Protocols
+ * 1, 2 and 3.
  *
  * Part of capbridge (lammps_pair/liggghts/). Compiled inside LIGGGHTS: C++98 and C++11.
  *
- * Protocol 2 conserves the liquid (free liquid of the particles + the bridges) within a run.
+ * The protocols conserve the liquid (free liquid of the particles + the bridges) within a run.
  * What changes it comes from outside the model, and LIGGGHTS says nothing about it: atoms
  * lost from the box (thermo_modify lost ignore) or deleted, free liquid set between runs,
  * atoms renumbered, or a pair_style issued again (a new contact history: every bridge and
