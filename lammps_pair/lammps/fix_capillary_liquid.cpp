@@ -10,7 +10,8 @@
    file: the command, the totals, the schedule, the output and the restart state; the
    protocols' work on the pairs is in capillary_protocols.cpp.  This fix
      - fixes the total liquid at the first run (W times the mass of the group over RHO,
-       or V), and the bridge volume the neighbor reach is built for (vmax);
+       or V), and derives at each run the bridge volume the neighbor reach is built for
+       (vmax: the core's design volume, unless given);
      - holds the per-atom free liquid of Protocols 2 and 3 (migrates with the atoms,
        written to restart files; allocated only for these protocols);
      - runs Protocol 1 (protocol1) at the start and every N steps
