@@ -377,29 +377,7 @@ namespace ContactModels {
           have_force = true;
           if (change == CB_BRIDGE_RUPTURED) release(released, ra, rb, swap, d, gap);
         } else if (gap <= 0.0 && !protocols_.protocol1) {  // (P1: only in a distribution)
-          const double *free_liquid = fix_free_->vector_atom;
-          if (free_liquid[i] + free_liquid[j] > 0.0) {
-            // a new bridge: it takes its liquid in endPass, once every rank knows how
-            // many bridges form on each particle in this step
-            double *nform = fix_formations_->vector_atom;
-            nform[i] += 1.0;
-            if (j_local) nform[j] += 1.0;
-            capbridge_liggghts::Candidate c;
-            c.history = hist;
-            c.contact_flags = d.contact_flags;
-            c.i = i;
-            c.j = j;
-            c.itype = d.itype;
-            c.jtype = d.jtype;
-            c.ra = ra;
-            c.rb = rb;
-            c.gap = gap;
-            c.en[0] = en[0];
-            c.en[1] = en[1];
-            c.en[2] = en[2];
-            c.swap = swap;
-            candidates_.push_back(c);
-          }
+          offer_formation(d, hist, ra, rb, swap, gap, en);
         }
         std::memcpy(hist, &bridge, sizeof bridge);
       }
@@ -420,6 +398,34 @@ namespace ContactModels {
         check(cb_bridge_force(law, ra, rb, gap, &bridge, &capillary), "force", d, gap,
               bridge.volume);
       return capillary;
+    }
+
+    /* Protocols 2, 3: a dry pair in contact where either particle has free liquid forms a
+     * bridge; it takes its liquid in endPass, once every rank knows how many bridges form
+     * on each particle in this step (ra, rb in the core's order; swap: i is b). */
+    void offer_formation(const SurfacesCloseData & d, double *hist, const double ra,
+                         const double rb, const bool swap, const double gap, const double *en)
+    {
+      const double *free_liquid = fix_free_->vector_atom;
+      if (!(free_liquid[d.i] + free_liquid[d.j] > 0.0)) return;
+      double *nform = fix_formations_->vector_atom;
+      nform[d.i] += 1.0;
+      if (d.j < atom->nlocal) nform[d.j] += 1.0;
+      capbridge_liggghts::Candidate c;
+      c.history = hist;
+      c.contact_flags = d.contact_flags;
+      c.i = d.i;
+      c.j = d.j;
+      c.itype = d.itype;
+      c.jtype = d.jtype;
+      c.ra = ra;
+      c.rb = rb;
+      c.gap = gap;
+      c.en[0] = en[0];
+      c.en[1] = en[1];
+      c.en[2] = en[2];
+      c.swap = swap;
+      candidates_.push_back(c);
     }
 
     /* A bridge held beyond the reach (a volume above the one the reach was built for) is
