@@ -551,26 +551,23 @@ namespace ContactModels {
     /* The contact history, and with it every bridge, is kept per pair of atom IDs: in a
      * periodic box narrower than twice the neighbor cutoff two atoms can meet as two
      * periodic images, each with a copy of their bridge, creating or destroying liquid.
-     * Widths between opposite faces (triclinic: 1 / |row of the inverse box matrix|). */
+     * The widths and the rule are the core's (cb_cell_widths, cb_periodic_too_narrow). */
     void check_periodic_images()
     {
-      const double *h_inv = domain->h_inv;
-      const double width[3] = {
-          1.0 / std::sqrt(h_inv[0] * h_inv[0] + h_inv[5] * h_inv[5] + h_inv[4] * h_inv[4]),
-          1.0 / std::sqrt(h_inv[1] * h_inv[1] + h_inv[3] * h_inv[3]), 1.0 / h_inv[2]};
+      double width[3];
+      cb_cell_widths(domain->h_inv, width);
       const int periodic[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
       const double cutoff = neighbor->cutneighmax;
-      for (int d = 0; d < 3; ++d) {
-        if (!periodic[d] || width[d] >= 2.0 * cutoff) continue;
-        char text[480];
-        snprintf(text, sizeof text,
-                 "cohesion model capillary: the periodic box is %g wide along %c, less than "
-                 "twice the neighbor cutoff %g: two atoms would meet as two periodic images, "
-                 "each holding a copy of their bridge.  Make the box at least %g wide along "
-                 "%c (or lower the neighbor skin)",
-                 width[d], "xyz"[d], cutoff, 2.0 * cutoff, "xyz"[d]);
-        fail_all(text);
-      }
+      const int d = cb_periodic_too_narrow(width, periodic, cutoff);
+      if (d < 0) return;
+      char text[480];
+      snprintf(text, sizeof text,
+               "cohesion model capillary: the periodic box is %g wide along %c, less than "
+               "twice the neighbor cutoff %g: two atoms would meet as two periodic images, "
+               "each holding a copy of their bridge.  Make the box at least %g wide along "
+               "%c (or lower the neighbor skin)",
+               width[d], "xyz"[d], cutoff, 2.0 * cutoff, "xyz"[d]);
+      fail_all(text);
     }
 
     void fail_all(const std::string &message)
