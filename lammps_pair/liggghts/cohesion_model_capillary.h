@@ -454,6 +454,18 @@ namespace ContactModels {
       if (d.j < atom->nlocal) released_[d.j] += swap ? share_a : share_b;
     }
 
+    /* Protocols 2, 3: the part of a particle's free liquid that each of its `formations`
+     * new bridges of this step is offered (the core's k-way share, cb_protocol_grain_step;
+     * the particle's free liquid is cleared after all its bridges took their parts). */
+    double formation_share(const double free_liquid, const double formations,
+                           const capbridge_liggghts::Candidate &c)
+    {
+      double free_after = free_liquid, deposit = 0.0, offer = 0.0;
+      check_at(cb_protocol_grain_step(0.0, 0, formations, &free_after, &deposit, &offer),
+               "Protocol 2 share", c.i, c.j, c.gap, free_liquid);
+      return offer;
+    }
+
     /* Protocol 2: the bridges that formed in this pass take their liquid. */
     void finish_formations()
     {
@@ -465,8 +477,8 @@ namespace ContactModels {
       for (size_t k = 0; k < candidates_.size(); ++k) {
         const capbridge_liggghts::Candidate &c = candidates_[k];
         // each of the nform[i] new bridges of particle i takes 1/nform[i] of its liquid
-        double from_i = free_liquid[c.i] / nform[c.i];
-        double from_j = free_liquid[c.j] / nform[c.j];
+        double from_i = formation_share(free_liquid[c.i], nform[c.i], c);
+        double from_j = formation_share(free_liquid[c.j], nform[c.j], c);
         double volume = 0.0;
         double *from_a = c.swap ? &from_j : &from_i;
         double *from_b = c.swap ? &from_i : &from_j;
