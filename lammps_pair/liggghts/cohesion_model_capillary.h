@@ -13,9 +13,11 @@
 
    What lives where:
      - the force, the rupture distance, the bridge transitions (form / hold / rupture)
-       and Richefeu's Protocol 2 (split of a broken bridge's liquid, take-all at
-       formation) are the core's: cb_bridge_step, cb_bridge_force, cb_protocol2_release,
-       cb_protocol2_take. This file only gathers the engine's data, stores the bridge
+       and Richefeu's Protocols 1, 2 and 3 (the distribution of eqs. 13-14, the split of
+       a broken bridge's liquid, the k-way share and take-all at formation, the
+       receiver) are the core's: cb_bridge_step, cb_bridge_force, cb_protocol2_release,
+       cb_protocol_grain_step, cb_protocol2_take, cb_protocol1_distribute,
+       cb_protocol3_better. This file only gathers the engine's data, stores the bridge
        state in LIGGGHTS's contact history and does the MPI communication.
      - the bridge state of a pair, a cb_bridge (its volume, and the constants the core
        derives from it, so that a bridge in contact costs no force-law evaluation), is
