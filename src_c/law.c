@@ -25,6 +25,12 @@ const cb_law_ops *const cb_law_registry[] = {
 typedef char registry_has_a_row_per_model[sizeof cb_law_registry / sizeof *cb_law_registry ==
                                                   CB_MODEL_COUNT ? 1 : -1];
 
+/* The row of a model; NULL for a value that is no model. */
+static const cb_law_ops *row_of(cb_model model)
+{
+    return model >= 0 && model < CB_MODEL_COUNT ? cb_law_registry[model] : NULL;
+}
+
 cb_status cb_fail(cb_message *msg, cb_status status, const char *format, ...)
 {
     if (msg) {
@@ -38,7 +44,7 @@ cb_status cb_fail(cb_message *msg, cb_status status, const char *format, ...)
 
 const char *cb_model_name(cb_model model)
 {
-    return (model >= 0 && model < CB_MODEL_COUNT) ? cb_law_registry[model]->name : "unknown";
+    return row_of(model) ? row_of(model)->name : "unknown";
 }
 
 const char *cb_law_names(void)
@@ -83,7 +89,7 @@ static cb_status check_contact_angle(double theta, cb_message *msg)
 cb_status cb_law_init(cb_law *law, cb_model model, double surface_tension, double contact_angle)
 {
     if (!law) return CB_ERR_NULL;
-    if (model < 0 || model >= CB_MODEL_COUNT) return CB_ERR_UNKNOWN_LAW;
+    if (!row_of(model)) return CB_ERR_UNKNOWN_LAW;
     cb_status status = check_surface_tension(surface_tension, NULL);
     if (status != CB_OK) return status;
     status = check_contact_angle(contact_angle, NULL);
@@ -125,11 +131,9 @@ cb_status cb_law_configure_once(cb_law *law, cb_keywords_given *given, const cha
     unsigned bit = 0;
     for (unsigned k = 0; k < COMMON_KEYWORDS; ++k)
         if (strcmp(keyword, common_keywords[k]) == 0) bit = 1u << k;
-    if (law->model >= 0 && law->model < CB_MODEL_COUNT) {
-        const cb_law_ops *ops = cb_law_registry[law->model];
-        for (int k = 0; k < ops->keyword_count; ++k)
-            if (strcmp(keyword, ops->keywords[k].name) == 0) bit = 1u << (COMMON_KEYWORDS + k);
-    }
+    const cb_law_ops *ops = row_of(law->model);
+    for (int k = 0; ops && k < ops->keyword_count; ++k)
+        if (strcmp(keyword, ops->keywords[k].name) == 0) bit = 1u << (COMMON_KEYWORDS + k);
     if (given->mask & bit)
         return cb_fail(msg, CB_ERR_RANGE,
                        "keyword '%s' given twice: each law keyword may be given once", keyword);
@@ -141,8 +145,7 @@ cb_status cb_law_configure_once(cb_law *law, cb_keywords_given *given, const cha
 /* CB_RUPTURE_EXACT: the law's own rupture rule, for a law that has one. */
 static int has_own_rupture(const cb_law *law)
 {
-    return law->model >= 0 && law->model < CB_MODEL_COUNT &&
-           cb_law_registry[law->model]->own_rupture != NULL;
+    return row_of(law->model) && row_of(law->model)->own_rupture != NULL;
 }
 
 /* ", name" after a list of names */
@@ -157,12 +160,10 @@ static void append_name(char *list, size_t size, const char *name)
 static cb_status law_keyword(cb_law *law, const char *keyword, const char *value,
                              cb_message *msg)
 {
-    if (law->model >= 0 && law->model < CB_MODEL_COUNT) {
-        const cb_law_ops *ops = cb_law_registry[law->model];
-        for (int k = 0; k < ops->keyword_count; ++k)
-            if (strcmp(keyword, ops->keywords[k].name) == 0)
-                return ops->set_keyword(law, k, value, msg);
-    }
+    const cb_law_ops *ops = row_of(law->model);
+    for (int k = 0; ops && k < ops->keyword_count; ++k)
+        if (strcmp(keyword, ops->keywords[k].name) == 0)
+            return ops->set_keyword(law, k, value, msg);
     char allowed[200] = "gamma";
     for (unsigned k = 1; k < COMMON_KEYWORDS; ++k)
         append_name(allowed, sizeof allowed, common_keywords[k]);
@@ -250,8 +251,8 @@ static cb_rupture_rule rupture_rule(const cb_law *law)
 int cb_law_same(const cb_law *a, const cb_law *b)
 {
     if (!a || !b) return 0;
-    if (a->model != b->model || a->model < 0 || a->model >= CB_MODEL_COUNT) return 0;
-    const cb_law_ops *ops = cb_law_registry[a->model];
+    const cb_law_ops *ops = row_of(a->model);
+    if (a->model != b->model || !ops) return 0;
     for (int k = 0; k < ops->keyword_count; ++k)
         if (a->parameters[k] != b->parameters[k]) return 0;
     return a->surface_tension == b->surface_tension && a->contact_angle == b->contact_angle &&
@@ -266,7 +267,7 @@ cb_status cb_law_prepare(cb_law *law, cb_message *msg)
     if (status != CB_OK) return status;
     status = check_contact_angle(law->contact_angle, msg);
     if (status != CB_OK) return status;
-    if (law->model < 0 || law->model >= CB_MODEL_COUNT)
+    if (!row_of(law->model))
         return cb_fail(msg, CB_ERR_UNKNOWN_LAW, "unknown law: allowed %s", cb_law_names());
     if (law->rupture == CB_RUPTURE_EXACT && !has_own_rupture(law))
         return cb_fail(msg, CB_ERR_UNKNOWN_KEYWORD,
@@ -290,8 +291,8 @@ cb_status cb_law_prepare(cb_law *law, cb_message *msg)
 void cb_law_release(cb_law *law)
 {
     if (!law) return;
-    if (law->model >= 0 && law->model < CB_MODEL_COUNT && cb_law_registry[law->model]->release)
-        cb_law_registry[law->model]->release(law);
+    const cb_law_ops *ops = row_of(law->model);
+    if (ops && ops->release) ops->release(law);
     law->prepared = 0;
 }
 
