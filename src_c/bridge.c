@@ -32,7 +32,7 @@ static const cb_bridge dry_bridge = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 
 /* A stored state is one of exactly two shapes: dry (all zero) or active {V > 0, 1, with
  * constants that a derivation can give: rupture > 0, contact force >= 0, radii > 0,
- * 1/lambda >= 0 (0: the force is evaluated in full, always correct)}.
+ * law constant >= 0 (0: the force is evaluated in full, always correct)}.
  * Anything else (e.g. a corrupted pair history) is an error, never silently repaired:
  * repairing it would create or lose liquid. */
 static cb_status check_state(const cb_bridge *b)
@@ -43,7 +43,7 @@ static cb_status check_state(const cb_bridge *b)
     else
         valid = b->active == 0.0 && b->volume == 0.0 && b->rupture == 0.0 &&
                 b->force_contact == 0.0 && b->radius_sum == 0.0 && b->radius_product == 0.0 &&
-                b->inverse_decay_length == 0.0;
+                b->law_constant == 0.0;
     return valid ? CB_OK : CB_ERR_BRIDGE_STATE;
 }
 
@@ -58,7 +58,8 @@ static cb_status check_inputs(const cb_law *law, double r1, double r2, double ga
 }
 
 /* An active bridge of this volume between these radii: its rupture distance and its force
- * at contact, by the same calls as cb_rupture_distance and cb_force. A volume the law
+ * at contact, by the same calls as cb_rupture_distance and cb_force, and its law's
+ * constant (the law's row, laws.h). A volume the law
  * refuses (validity strict, or beyond the table) is reported here, and *out is untouched. */
 static cb_status derive(const cb_law *law, double r1, double r2, double volume, cb_bridge *out)
 {
@@ -74,8 +75,7 @@ static cb_status derive(const cb_law *law, double r1, double r2, double volume, 
     out->force_contact = force;
     out->radius_sum = r1 + r2;
     out->radius_product = r1 * r2;
-    out->inverse_decay_length =
-        law->model == CB_MODEL_RICHEFEU ? cb_richefeu_inverse_length(law, &pair) : 0.0;
+    out->law_constant = cb_law_ops_of(law)->bridge_constant(law, &pair);
     return CB_OK;
 }
 
@@ -124,13 +124,13 @@ static cb_status force_of(const cb_law *law, double r1, double r2, double gap,
         *force = 0.0;
         return CB_OK;
     }
-    /* From the stored constants where they give it (in contact: always, for a valid
+    /* From the stored constants where they give it inline (in contact: always, for a valid
      * bridge with these constants; stretched, richefeu: one exponential instead of a
      * square root, four divisions and the exponential, x0.96-0.98 of the benchmark
-     * scene's wet loop, bench/README.md); else the law in full. */
+     * scene's wet loop, bench/README.md); else through the law's row. */
     if (cb_bridge_held(law, r1, r2, gap, bridge, force)) return CB_OK;
     cb_pair pair = cb_pair_make(law, r1, r2, bridge->volume);
-    return cb_pair_force(law, &pair, bridge->rupture, gap, force, NULL);
+    return cb_pair_bridge_force(law, &pair, bridge, gap, force);
 }
 
 cb_status cb_bridge_update(const cb_law *law, double r1, double r2, double gap,

@@ -100,6 +100,8 @@ typedef enum cb_validity_rule {
 
 struct cb_table; /* the tabulated exact solution, opaque */
 
+#define CB_LAW_PARAMETERS 4 /* the most keywords of its own a law may have */
+
 /* A law is a value: model, parameters and options, plus what is derived from them
  * once (cb_law_prepare). Fill it with cb_law_init, change it with cb_law_configure,
  * then call cb_law_prepare before the first force call.
@@ -112,7 +114,9 @@ typedef struct cb_law {
     cb_model model;
     double surface_tension;   /* gamma [N/m] */
     double contact_angle;     /* theta [rad], 0 <= theta < pi/2 */
-    double richefeu_c;        /* the constant c of Richefeu eq. 9 (default 0.9) */
+    /* the values of the law's own keywords, in the order of its row's list (laws.h):
+     * richefeu: [0] = c of Richefeu eq. 9 (default 0.9) */
+    double parameters[CB_LAW_PARAMETERS];
     cb_rupture_rule rupture;
     cb_overlap_rule overlap;
     cb_validity_rule validity;
@@ -120,7 +124,8 @@ typedef struct cb_law {
     cb_rupture_rule rupture_in_use;
     double cos_theta, sin_theta;
     double rupture_factor;    /* 1 + theta/2 */
-    const struct cb_table *table; /* CB_MODEL_TABLE only; owned by the law */
+    void *data;               /* what the law's preparation allocated (the table law's
+                               * table), else NULL; owned by the law */
     int prepared;
 } cb_law;
 
@@ -164,6 +169,8 @@ cb_status cb_law_init(cb_law *law, cb_model model, double surface_tension, doubl
  *   overlap contact|none
  *   validity extend|strict
  *   c <value>                  Richefeu's constant (richefeu only, > 0)
+ * The last is a law's own keyword: each law lists its own in its registry row (laws.h),
+ * and another law refuses it by name.
  * On error, msg names the keyword, the value and what is allowed. */
 cb_status cb_law_configure(cb_law *law, const char *keyword, const char *value, cb_message *msg);
 
@@ -386,9 +393,10 @@ typedef struct cb_bridge {
     double force_contact;  /* the force at gap 0 [N] */
     double radius_sum;     /* r1 + r2 and r1 r2 of the radii the two above are for */
     double radius_product;
-    double inverse_decay_length; /* richefeu: 1/lambda (eq. 11) [1/m], so that a stretched
-                                  * bridge's force is force_contact exp(-gap/lambda); 0 for
-                                  * the other laws, whose force is evaluated in full */
+    double law_constant;   /* the constant the law keeps for a stretched bridge (finite,
+                            * >= 0): richefeu's 1/lambda (eq. 11) [1/m], so that its force
+                            * is force_contact exp(-gap/lambda); 0 for a law that keeps
+                            * none and evaluates its force in full */
 } cb_bridge;
 #define CB_BRIDGE_DOUBLES 7
 
@@ -432,15 +440,14 @@ cb_status cb_bridge_force(const cb_law *law, double r1, double r2, double gap,
  * stretched bridge, or a stored state that is not an active bridge's (cb_bridge_step
  * reports it).  Uses exp(): the engine links libm. */
 /* 1 when a stored state is a valid active bridge's: volume > 0, active 1, rupture > 0,
- * contact force >= 0, radii > 0, 1/lambda >= 0, every one finite.  The one definition of
+ * contact force >= 0, radii > 0, law constant >= 0, every one finite.  The one definition of
  * that shape: cb_bridge_step validates with it, cb_bridge_held below accepts only it. */
 static inline int cb_bridge_active_state(const cb_bridge *b)
 {
     return b->active == 1.0 && b->volume > 0.0 && b->volume <= DBL_MAX && b->rupture > 0.0 &&
            b->rupture <= DBL_MAX && b->force_contact >= 0.0 && b->force_contact <= DBL_MAX &&
            b->radius_sum > 0.0 && b->radius_sum <= DBL_MAX && b->radius_product > 0.0 &&
-           b->radius_product <= DBL_MAX && b->inverse_decay_length >= 0.0 &&
-           b->inverse_decay_length <= DBL_MAX;
+           b->radius_product <= DBL_MAX && b->law_constant >= 0.0 && b->law_constant <= DBL_MAX;
 }
 
 static inline int cb_bridge_held(const cb_law *law, double r1, double r2, double gap,
@@ -455,11 +462,13 @@ static inline int cb_bridge_held(const cb_law *law, double r1, double r2, double
         *force = gap < 0.0 && law->overlap == CB_OVERLAP_NONE ? 0.0 : bridge->force_contact;
         return 1;
     }
-    /* the product cb_richefeu_force forms (kappa R_g exp(-gap/lambda)); a strict law checks
-     * its validity at every evaluation, so it takes the call */
-    if (gap <= bridge->rupture && bridge->inverse_decay_length > 0.0 &&
+    /* Richefeu's stretched bridge inline, the one law here: it is the engines' default and
+     * the call costs more than its one exp.  The product its row's bridge_force forms
+     * (law_richefeu.c); a strict law checks its validity at every evaluation, so it takes
+     * the call, as does every other law's stretched bridge (its own bridge_force). */
+    if (gap <= bridge->rupture && bridge->law_constant > 0.0 &&
         law->model == CB_MODEL_RICHEFEU && law->validity != CB_VALIDITY_STRICT) {
-        *force = bridge->force_contact * exp(-gap * bridge->inverse_decay_length);
+        *force = bridge->force_contact * exp(-gap * bridge->law_constant);
         return 1;
     }
     return 0;

@@ -1,5 +1,7 @@
-/* law.c — a law as a value: names, keywords, preparation, and the force dispatcher
- * that applies the overlap, rupture and validity rules around each law's formula. */
+/* law.c — a law as a value: the registry of the laws, names, keywords, preparation, and
+ * the force dispatcher that applies the overlap, rupture and validity rules around each
+ * law's formula.  Adding a law: its file with its row (cb_law_ops, laws.h), its cb_model
+ * value, its row below and its name in cb_law_names; tests/test_registry.c checks them. */
 #include "laws.h"
 
 #include <math.h>
@@ -9,15 +11,25 @@
 #include <string.h>
 
 
-static const char *const model_names[CB_MODEL_COUNT] = {
-    "richefeu", "willett", "willett/reduced", "rabinovich", "rabinovich/uncorrected",
-    "weigert", "soulie", "table"};
+const cb_law_ops *const cb_law_registry[] = {
+    [CB_MODEL_RICHEFEU] = &cb_richefeu_ops,
+    [CB_MODEL_WILLETT] = &cb_willett_ops,
+    [CB_MODEL_WILLETT_REDUCED] = &cb_willett_reduced_ops,
+    [CB_MODEL_RABINOVICH] = &cb_rabinovich_ops,
+    [CB_MODEL_RABINOVICH_UNCORRECTED] = &cb_rabinovich_uncorrected_ops,
+    [CB_MODEL_WEIGERT] = &cb_weigert_ops,
+    [CB_MODEL_SOULIE] = &cb_soulie_ops,
+    [CB_MODEL_TABLE] = &cb_table_ops,
+};
+/* one row per cb_model (a row left out in the middle is NULL: test_registry finds it) */
+typedef char registry_has_a_row_per_model[sizeof cb_law_registry / sizeof *cb_law_registry ==
+                                                  CB_MODEL_COUNT ? 1 : -1];
 
-static const cb_force_fn model_forces[CB_MODEL_COUNT] = {
-    cb_richefeu_force,   cb_willett_force,
-    cb_willett_reduced_force, cb_rabinovich_force,
-    cb_rabinovich_uncorrected_force, cb_weigert_force,
-    cb_soulie_force,     cb_table_force};
+/* The row of a model; NULL for a value that is no model. */
+static const cb_law_ops *row_of(cb_model model)
+{
+    return model >= 0 && model < CB_MODEL_COUNT ? cb_law_registry[model] : NULL;
+}
 
 cb_status cb_fail(cb_message *msg, cb_status status, const char *format, ...)
 {
@@ -32,7 +44,7 @@ cb_status cb_fail(cb_message *msg, cb_status status, const char *format, ...)
 
 const char *cb_model_name(cb_model model)
 {
-    return (model >= 0 && model < CB_MODEL_COUNT) ? model_names[model] : "unknown";
+    return row_of(model) ? row_of(model)->name : "unknown";
 }
 
 const char *cb_law_names(void)
@@ -45,7 +57,7 @@ cb_status cb_model_from_name(const char *name, cb_model *model)
 {
     if (!name || !model) return CB_ERR_NULL;
     for (int m = 0; m < CB_MODEL_COUNT; ++m) {
-        if (strcmp(name, model_names[m]) == 0) {
+        if (strcmp(name, cb_law_registry[m]->name) == 0) {
             *model = (cb_model)m;
             return CB_OK;
         }
@@ -77,7 +89,7 @@ static cb_status check_contact_angle(double theta, cb_message *msg)
 cb_status cb_law_init(cb_law *law, cb_model model, double surface_tension, double contact_angle)
 {
     if (!law) return CB_ERR_NULL;
-    if (model < 0 || model >= CB_MODEL_COUNT) return CB_ERR_UNKNOWN_LAW;
+    if (!row_of(model)) return CB_ERR_UNKNOWN_LAW;
     cb_status status = check_surface_tension(surface_tension, NULL);
     if (status != CB_OK) return status;
     status = check_contact_angle(contact_angle, NULL);
@@ -86,12 +98,19 @@ cb_status cb_law_init(cb_law *law, cb_model model, double surface_tension, doubl
     law->model = model;
     law->surface_tension = surface_tension;
     law->contact_angle = contact_angle;
-    law->richefeu_c = 0.9; /* Richefeu 2007 after eq. 9: c ~ 0.9 */
+    const cb_law_ops *ops = cb_law_registry[model];
+    for (int k = 0; k < ops->keyword_count; ++k)
+        law->parameters[k] = ops->keywords[k].default_value;
     law->rupture = CB_RUPTURE_DEFAULT;
     law->overlap = CB_OVERLAP_CONTACT;
     law->validity = CB_VALIDITY_EXTEND;
     return CB_OK;
 }
+
+/* The keywords of every law (cb_law_configure), then each law's own (its row). */
+static const char *const common_keywords[] = {"gamma", "theta", "rupture", "overlap",
+                                              "validity"};
+enum { COMMON_KEYWORDS = sizeof common_keywords / sizeof *common_keywords };
 
 /* Any change leaves the law unprepared until cb_law_prepare derives it again. */
 static cb_status apply_keyword(cb_law *law, const char *keyword, const char *value,
@@ -108,18 +127,59 @@ cb_status cb_law_configure(cb_law *law, const char *keyword, const char *value, 
 cb_status cb_law_configure_once(cb_law *law, cb_keywords_given *given, const char *keyword,
                                 const char *value, cb_message *msg)
 {
-    static const char *const keywords[] = {"gamma", "theta", "rupture", "overlap", "validity",
-                                           "c"};
     if (!law || !given || !keyword) return cb_fail(msg, CB_ERR_NULL, "missing keyword");
     unsigned bit = 0;
-    for (unsigned k = 0; k < sizeof keywords / sizeof *keywords; ++k)
-        if (strcmp(keyword, keywords[k]) == 0) bit = 1u << k;
+    for (unsigned k = 0; k < COMMON_KEYWORDS; ++k)
+        if (strcmp(keyword, common_keywords[k]) == 0) bit = 1u << k;
+    const cb_law_ops *ops = row_of(law->model);
+    for (int k = 0; ops && k < ops->keyword_count; ++k)
+        if (strcmp(keyword, ops->keywords[k].name) == 0) bit = 1u << (COMMON_KEYWORDS + k);
     if (given->mask & bit)
         return cb_fail(msg, CB_ERR_RANGE,
                        "keyword '%s' given twice: each law keyword may be given once", keyword);
     cb_status status = cb_law_configure(law, keyword, value, msg);
     if (status == CB_OK) given->mask |= bit;
     return status;
+}
+
+/* CB_RUPTURE_EXACT: the law's own rupture rule, for a law that has one. */
+static int has_own_rupture(const cb_law *law)
+{
+    return row_of(law->model) && row_of(law->model)->own_rupture != NULL;
+}
+
+/* ", name" after a list of names */
+static void append_name(char *list, size_t size, const char *name)
+{
+    size_t used = strlen(list);
+    snprintf(list + used, size - used, ", %s", name);
+}
+
+/* A keyword that is none of every law's: the law's own (its row sets it), another law's
+ * (refused by name), or unknown (the message lists them all). */
+static cb_status law_keyword(cb_law *law, const char *keyword, const char *value,
+                             cb_message *msg)
+{
+    const cb_law_ops *ops = row_of(law->model);
+    for (int k = 0; ops && k < ops->keyword_count; ++k)
+        if (strcmp(keyword, ops->keywords[k].name) == 0)
+            return ops->set_keyword(law, k, value, msg);
+    char allowed[200] = "gamma";
+    for (unsigned k = 1; k < COMMON_KEYWORDS; ++k)
+        append_name(allowed, sizeof allowed, common_keywords[k]);
+    for (int m = 0; m < CB_MODEL_COUNT; ++m) {
+        const cb_law_ops *other = cb_law_registry[m];
+        for (int k = 0; k < other->keyword_count; ++k) {
+            if (strcmp(keyword, other->keywords[k].name) == 0)
+                return cb_fail(msg, CB_ERR_UNKNOWN_KEYWORD,
+                               "keyword '%s' (%s) applies to law %s only, not to %s", keyword,
+                               other->keywords[k].description, other->name,
+                               cb_model_name(law->model));
+            append_name(allowed, sizeof allowed, other->keywords[k].name);
+        }
+    }
+    return cb_fail(msg, CB_ERR_UNKNOWN_KEYWORD, "unknown keyword '%s': allowed %s", keyword,
+                   allowed);
 }
 
 static cb_status apply_keyword(cb_law *law, const char *keyword, const char *value,
@@ -149,29 +209,17 @@ static cb_status apply_keyword(cb_law *law, const char *keyword, const char *val
         if (status == CB_OK) law->contact_angle = number * CB_PI / 180.0;
         return status;
     }
-    if (strcmp(keyword, "c") == 0) {
-        if (law->model != CB_MODEL_RICHEFEU)
-            return cb_fail(msg, CB_ERR_UNKNOWN_KEYWORD,
-                           "keyword 'c' (Richefeu's constant) applies to law richefeu only, "
-                           "not to %s",
-                           cb_model_name(law->model));
-        if (!is_number || number <= 0.0)
-            return cb_fail(msg, CB_ERR_RANGE, "c '%s': must be a number > 0 (default 0.9)",
-                           value);
-        law->richefeu_c = number;
-        return CB_OK;
-    }
     if (strcmp(keyword, "rupture") == 0) {
         if (strcmp(value, "default") == 0) law->rupture = CB_RUPTURE_DEFAULT;
         else if (strcmp(value, "lian") == 0) law->rupture = CB_RUPTURE_LIAN;
         else if (strcmp(value, "willett") == 0) law->rupture = CB_RUPTURE_WILLETT;
         else if (strcmp(value, "willett/unequal") == 0) law->rupture = CB_RUPTURE_WILLETT_UNEQUAL;
-        else if (strcmp(value, "exact") == 0 && law->model == CB_MODEL_TABLE)
+        else if (strcmp(value, "exact") == 0 && has_own_rupture(law))
             law->rupture = CB_RUPTURE_EXACT;
         else
             return cb_fail(msg, CB_ERR_UNKNOWN_KEYWORD,
                            "rupture '%s': allowed lian, willett, willett/unequal, default%s", value,
-                           law->model == CB_MODEL_TABLE ? ", exact" : "");
+                           has_own_rupture(law) ? ", exact" : "");
         return CB_OK;
     }
     if (strcmp(keyword, "overlap") == 0) {
@@ -190,35 +238,26 @@ static cb_status apply_keyword(cb_law *law, const char *keyword, const char *val
                            "validity '%s': allowed extend, strict", value);
         return CB_OK;
     }
-    return cb_fail(msg, CB_ERR_UNKNOWN_KEYWORD,
-                   "unknown keyword '%s': allowed gamma, theta, rupture, overlap, validity, c",
-                   keyword);
+    return law_keyword(law, keyword, value, msg);
 }
 
-/* The rupture rule each law's source uses: Richefeu eq. 6 takes Lian's; Gladkyy eq. 2
- * applies Willett's to every law it compares; Soulie 2006 takes Lian's; the table law
- * knows the exact fold. */
-static cb_rupture_rule default_rupture(cb_model model)
+/* The rupture rule in use: a default one is the rule of the law's source (its row). */
+static cb_rupture_rule rupture_rule(const cb_law *law)
 {
-    switch (model) {
-    case CB_MODEL_RICHEFEU:
-    case CB_MODEL_SOULIE: return CB_RUPTURE_LIAN;
-    case CB_MODEL_TABLE: return CB_RUPTURE_EXACT;
-    default: return CB_RUPTURE_WILLETT;
-    }
+    return law->rupture == CB_RUPTURE_DEFAULT ? cb_law_registry[law->model]->default_rupture
+                                              : law->rupture;
 }
 
 int cb_law_same(const cb_law *a, const cb_law *b)
 {
     if (!a || !b) return 0;
-    cb_rupture_rule rule_a = a->rupture == CB_RUPTURE_DEFAULT ? default_rupture(a->model)
-                                                              : a->rupture;
-    cb_rupture_rule rule_b = b->rupture == CB_RUPTURE_DEFAULT ? default_rupture(b->model)
-                                                              : b->rupture;
-    return a->model == b->model && a->surface_tension == b->surface_tension &&
-           a->contact_angle == b->contact_angle && rule_a == rule_b &&
-           a->overlap == b->overlap && a->validity == b->validity &&
-           (a->model != CB_MODEL_RICHEFEU || a->richefeu_c == b->richefeu_c);
+    const cb_law_ops *ops = row_of(a->model);
+    if (a->model != b->model || !ops) return 0;
+    for (int k = 0; k < ops->keyword_count; ++k)
+        if (a->parameters[k] != b->parameters[k]) return 0;
+    return a->surface_tension == b->surface_tension && a->contact_angle == b->contact_angle &&
+           rupture_rule(a) == rupture_rule(b) && a->overlap == b->overlap &&
+           a->validity == b->validity;
 }
 
 cb_status cb_law_prepare(cb_law *law, cb_message *msg)
@@ -228,27 +267,22 @@ cb_status cb_law_prepare(cb_law *law, cb_message *msg)
     if (status != CB_OK) return status;
     status = check_contact_angle(law->contact_angle, msg);
     if (status != CB_OK) return status;
-    if (law->model < 0 || law->model >= CB_MODEL_COUNT)
+    if (!row_of(law->model))
         return cb_fail(msg, CB_ERR_UNKNOWN_LAW, "unknown law: allowed %s", cb_law_names());
-    if (law->rupture == CB_RUPTURE_EXACT && law->model != CB_MODEL_TABLE)
+    if (law->rupture == CB_RUPTURE_EXACT && !has_own_rupture(law))
         return cb_fail(msg, CB_ERR_UNKNOWN_KEYWORD,
                        "rupture exact is available for the table law only");
 
-    law->rupture_in_use =
-        law->rupture == CB_RUPTURE_DEFAULT ? default_rupture(law->model) : law->rupture;
+    law->rupture_in_use = rupture_rule(law);
     law->cos_theta = cos(law->contact_angle);
     law->sin_theta = sin(law->contact_angle);
     law->rupture_factor = 1.0 + 0.5 * law->contact_angle; /* (1 + theta/2), theta in rad */
 
-    /* The table depends on the contact angle only: keep it while theta is unchanged. */
-    int table_current = law->model == CB_MODEL_TABLE && law->table &&
-                        cb_table_contact_angle(law->table) == law->contact_angle;
-    if (!table_current) cb_law_release(law);
-    if (law->model == CB_MODEL_TABLE && !table_current) {
-        struct cb_table *table = NULL;
-        status = cb_table_create(law->contact_angle, &table, msg);
+    law->prepared = 0;
+    const cb_law_ops *ops = cb_law_registry[law->model];
+    if (ops->prepare) {
+        status = ops->prepare(law, msg);
         if (status != CB_OK) return status;
-        law->table = table;
     }
     law->prepared = 1;
     return CB_OK;
@@ -257,24 +291,14 @@ cb_status cb_law_prepare(cb_law *law, cb_message *msg)
 void cb_law_release(cb_law *law)
 {
     if (!law) return;
-    if (law->table) cb_table_destroy((struct cb_table *)law->table);
-    law->table = NULL;
+    const cb_law_ops *ops = row_of(law->model);
+    if (ops && ops->release) ops->release(law);
     law->prepared = 0;
 }
 
 cb_validity cb_law_validity(const cb_law *law)
 {
-    switch (law->model) {
-    case CB_MODEL_RICHEFEU: return cb_richefeu_validity();
-    case CB_MODEL_WILLETT: return cb_willett_validity();
-    case CB_MODEL_WILLETT_REDUCED: return cb_willett_reduced_validity();
-    case CB_MODEL_RABINOVICH:
-    case CB_MODEL_RABINOVICH_UNCORRECTED: return cb_rabinovich_validity();
-    case CB_MODEL_WEIGERT: return cb_weigert_validity();
-    case CB_MODEL_SOULIE: return cb_soulie_validity();
-    case CB_MODEL_TABLE:
-    default: return cb_table_validity(law);
-    }
+    return cb_law_ops_of(law)->validity(law);
 }
 
 cb_pair cb_pair_make(const cb_law *law, double r1, double r2, double volume)
@@ -287,7 +311,8 @@ cb_pair cb_pair_make(const cb_law *law, double r1, double r2, double volume)
     pair.r_harmonic = cb_radius_harmonic(r1, r2);
     pair.r_geometric = cb_radius_geometric(r1, r2);
     pair.volume = volume;
-    if (law->model == CB_MODEL_TABLE) cb_table_locate(law, &pair);
+    const cb_law_ops *ops = cb_law_ops_of(law);
+    if (ops->locate) ops->locate(law, &pair);
     return pair;
 }
 
@@ -316,9 +341,10 @@ static double rupture_of(const cb_law *law, const cb_pair *pair)
     case CB_RUPTURE_LIAN: return cb_rupture_lian(law, pair);
     case CB_RUPTURE_WILLETT: return cb_rupture_willett(law, pair);
     case CB_RUPTURE_WILLETT_UNEQUAL: return cb_rupture_willett_unequal(law, pair);
-    case CB_RUPTURE_EXACT:
-    default: return cb_table_rupture(law, pair);
+    case CB_RUPTURE_EXACT: return cb_law_ops_of(law)->own_rupture(law, pair);
+    case CB_RUPTURE_DEFAULT: break; /* never in use: cb_law_prepare resolves it */
     }
+    return NAN; /* refused by the caller as out of range */
 }
 
 cb_status cb_pair_rupture(const cb_law *law, const cb_pair *pair, double *rupture)
@@ -352,13 +378,13 @@ cb_status cb_rupture_volume(const cb_law *law, double r1, double r2, double gap,
         return CB_OK;
     }
     cb_pair pair = cb_pair_make(law, r1, r2, 0.0);
-    double v;
+    double v = NAN; /* refused below if no rule gives it */
     switch (law->rupture_in_use) {
     case CB_RUPTURE_LIAN: v = cb_rupture_volume_lian(law, &pair, gap); break;
     case CB_RUPTURE_WILLETT: v = cb_rupture_volume_willett(law, &pair, gap); break;
     case CB_RUPTURE_WILLETT_UNEQUAL: v = cb_rupture_volume_willett_unequal(law, &pair, gap); break;
-    case CB_RUPTURE_EXACT:
-    default: v = cb_table_rupture_volume(law, &pair, gap); break;
+    case CB_RUPTURE_EXACT: v = cb_law_ops_of(law)->own_rupture_volume(law, &pair, gap); break;
+    case CB_RUPTURE_DEFAULT: break; /* never in use: cb_law_prepare resolves it */
     }
     if (!isfinite(v)) return CB_ERR_RANGE;
     *volume = v;
@@ -382,17 +408,47 @@ cb_status cb_pair_force(const cb_law *law, const cb_pair *pair, double rupture, 
         /* Overlap: Richefeu eq. 10 keeps the contact value (continuous); Gladkyy eq. 4
          * applies no capillary force in mechanical contact. */
         if (law->overlap == CB_OVERLAP_CONTACT) {
-            status = model_forces[law->model](law, pair, 0.0, &f, &df);
+            status = cb_law_ops_of(law)->force(law, pair, 0.0, &f, &df);
             df = 0.0;
         }
     } else if (gap == 0.0 || gap <= rupture) {
-        status = model_forces[law->model](law, pair, gap, &f, &df);
+        status = cb_law_ops_of(law)->force(law, pair, gap, &f, &df);
     }
     if (status != CB_OK) return status;
     /* a stiffness out of double range fails only a call that asks for it */
     if (!isfinite(f) || f < 0.0 || (stiffness && !isfinite(df))) return CB_ERR_RANGE;
     *force = f;
     if (stiffness) *stiffness = df;
+    return CB_OK;
+}
+
+double cb_no_bridge_constant(const cb_law *law, const cb_pair *pair)
+{
+    (void)law;
+    (void)pair;
+    return 0.0;
+}
+
+cb_status cb_bridge_force_in_full(const cb_law *law, const cb_pair *pair,
+                                  const cb_bridge *bridge, double gap, double *force)
+{
+    (void)bridge;
+    double stiffness = 0.0;
+    return cb_law_ops_of(law)->force(law, pair, gap, force, &stiffness);
+}
+
+cb_status cb_pair_bridge_force(const cb_law *law, const cb_pair *pair, const cb_bridge *bridge,
+                               double gap, double *force)
+{
+    if (!(gap > 0.0 && gap <= bridge->rupture))
+        return cb_pair_force(law, pair, bridge->rupture, gap, force, NULL);
+    if (law->validity == CB_VALIDITY_STRICT && !inside_validity(law, pair))
+        return CB_ERR_OUT_OF_VALIDITY;
+    double f = 0.0;
+    cb_status status = cb_law_ops_of(law)->bridge_force(law, pair, bridge, gap, &f);
+    if (status != CB_OK) return status;
+    if (!isfinite(f) || f < 0.0) return CB_ERR_RANGE;
+    *force = f;
     return CB_OK;
 }
 
@@ -465,11 +521,12 @@ cb_status cb_capillary_stiffness_bound(const cb_law *law, double r1, double r2, 
     double rupture = 0.0;
     cb_status status = cb_rupture_distance(law, r1, r2, volume, &rupture);
     if (status != CB_OK) return status;
-    if (law->model == CB_MODEL_TABLE) {
-        /* from the interpolant, cell by cell (law_table.c): its steepest point, in the half
-         * cell before the fold, falls between any samples of the gap */
+    const cb_law_ops *ops = cb_law_ops_of(law);
+    if (ops->stiffness_bound) {
+        /* the law's own (the table law's, from its interpolant cell by cell: its steepest
+         * point, in the half cell before the fold, falls between any samples of the gap) */
         cb_pair pair = cb_pair_make(law, r1, r2, volume);
-        double bound = cb_table_stiffness_bound(law, &pair);
+        double bound = ops->stiffness_bound(law, &pair);
         if (!isfinite(bound)) return CB_ERR_RANGE;
         *stiffness = bound;
         return CB_OK;

@@ -54,16 +54,16 @@ static void rabinovich_corrected(const cb_law *law, const cb_pair *pair, double 
     *immersion_slope = -(1.0 + s / root) / (2.0 * sum * sum);
 }
 
-cb_status cb_rabinovich_force(const cb_law *law, const cb_pair *pair, double gap,
-                              double *force, double *stiffness)
+static cb_status rabinovich_force(const cb_law *law, const cb_pair *pair, double gap,
+                                  double *force, double *stiffness)
 {
     double d_sp, d_sp_slope;
     rabinovich_corrected(law, pair, gap, force, stiffness, &d_sp, &d_sp_slope);
     return CB_OK;
 }
 
-cb_status cb_rabinovich_uncorrected_force(const cb_law *law, const cb_pair *pair, double gap,
-                                          double *force, double *stiffness)
+static cb_status rabinovich_uncorrected_force(const cb_law *law, const cb_pair *pair, double gap,
+                                              double *force, double *stiffness)
 {
     double f, df, d_sp, d_sp_slope;
     rabinovich_corrected(law, pair, gap, &f, &df, &d_sp, &d_sp_slope);
@@ -83,10 +83,30 @@ cb_status cb_rabinovich_uncorrected_force(const cb_law *law, const cb_pair *pair
 
 /* No range is stated for the closed form in the sources available here (Gladkyy 2014
  * §2.4 gives none; the derivation is Derjaguin's, i.e. small filling angles). */
-cb_validity cb_rabinovich_validity(void)
+static cb_validity rabinovich_validity(const cb_law *law)
 {
+    (void)law;
     cb_validity v = {0.0, HUGE_VAL, HUGE_VAL, HUGE_VAL, CB_RADIUS_HARMONIC,
                      "Rabinovich et al. 2005 via Gladkyy & Schwarze 2014 §2.4: "
                      "no range stated"};
     return v;
 }
+
+/* Gladkyy eq. 2 applies Willett's rupture rule to every law it compares. */
+const cb_law_ops cb_rabinovich_ops = {
+    .name = "rabinovich",
+    .force = rabinovich_force,
+    .validity = rabinovich_validity,
+    .default_rupture = CB_RUPTURE_WILLETT,
+    .bridge_constant = cb_no_bridge_constant,
+    .bridge_force = cb_bridge_force_in_full,
+};
+
+const cb_law_ops cb_rabinovich_uncorrected_ops = {
+    .name = "rabinovich/uncorrected",
+    .force = rabinovich_uncorrected_force,
+    .validity = rabinovich_validity,
+    .default_rupture = CB_RUPTURE_WILLETT,
+    .bridge_constant = cb_no_bridge_constant,
+    .bridge_force = cb_bridge_force_in_full,
+};

@@ -22,8 +22,8 @@
 #include <math.h>
 
 
-cb_status cb_soulie_force(const cb_law *law, const cb_pair *pair, double gap, double *force,
-                          double *stiffness)
+static cb_status soulie_force(const cb_law *law, const cb_pair *pair, double gap,
+                              double *force, double *stiffness)
 {
     double r_large = pair->r_large;
     double lv = log(pair->volume / (r_large * r_large * r_large));
@@ -48,9 +48,20 @@ cb_status cb_soulie_force(const cb_law *law, const cb_pair *pair, double gap, do
 
 /* No range is stated for the fit in the sources available here (the formula above is
  * the one other public DEM codes implement; Gladkyy 2014 does not evaluate it). */
-cb_validity cb_soulie_validity(void)
+static cb_validity soulie_validity(const cb_law *law)
 {
+    (void)law;
     cb_validity v = {0.0, HUGE_VAL, HUGE_VAL, HUGE_VAL, CB_RADIUS_LARGE,
                      "Soulie et al. 2006 (as in public DEM codes): no range stated"};
     return v;
 }
+
+/* Soulie 2006 takes Lian's rupture rule. */
+const cb_law_ops cb_soulie_ops = {
+    .name = "soulie",
+    .force = soulie_force,
+    .validity = soulie_validity,
+    .default_rupture = CB_RUPTURE_LIAN,
+    .bridge_constant = cb_no_bridge_constant,
+    .bridge_force = cb_bridge_force_in_full,
+};

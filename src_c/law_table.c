@@ -156,7 +156,7 @@ static cb_status fill_node(struct cb_table *table, int i, int j, cb_message *msg
     return CB_OK;
 }
 
-cb_status cb_table_create(double contact_angle, struct cb_table **table, cb_message *msg)
+static cb_status table_create(double contact_angle, struct cb_table **table, cb_message *msg)
 {
     struct cb_table *t = malloc(sizeof *t);
     if (!t) return cb_fail(msg, CB_ERR_NO_MEMORY, "table law: out of memory");
@@ -174,9 +174,29 @@ cb_status cb_table_create(double contact_angle, struct cb_table **table, cb_mess
     return CB_OK;
 }
 
-void cb_table_destroy(struct cb_table *table) { free(table); }
+/* The table a prepared table law owns (law->data). */
+static const struct cb_table *table_of(const cb_law *law)
+{
+    return (const struct cb_table *)law->data;
+}
 
-double cb_table_contact_angle(const struct cb_table *table) { return table->contact_angle; }
+static void table_release(cb_law *law)
+{
+    free(law->data);
+    law->data = NULL;
+}
+
+/* The table depends on the contact angle only: kept while theta is unchanged. */
+static cb_status table_prepare(cb_law *law, cb_message *msg)
+{
+    if (law->data && table_of(law)->contact_angle == law->contact_angle) return CB_OK;
+    table_release(law);
+    struct cb_table *table = NULL;
+    cb_status status = table_create(law->contact_angle, &table, msg);
+    if (status != CB_OK) return status;
+    law->data = table;
+    return CB_OK;
+}
 
 /* A 4-point cubic Lagrange stencil on a uniform grid of n nodes for coordinate x
  * (in node units, clamped into [0, n-1]): first node and weights. */
@@ -211,7 +231,7 @@ static double scaled_rupture(const struct cb_table *t, const cb_table_position *
 /* Where the pair sits in the table: the 4 x 4 stencil in (q, ln v), its weights as
  * products (so that each lookup of the force is one weighted sum over 16 nodes), and
  * its rupture distance. */
-void cb_table_locate(const cb_law *law, cb_pair *pair)
+static void table_locate(const cb_law *law, cb_pair *pair)
 {
     cb_table_position *p = &pair->table;
     /* V / R_h^3 with 1/R_h = (R1 + R2) / (2 R1 R2) from the radii: a division that runs
@@ -230,10 +250,10 @@ void cb_table_locate(const cb_law *law, cb_pair *pair)
     p->volume_first = lagrange_stencil(x_volume, TABLE_VOLUMES, volume_weight);
     for (int a = 0; a < 4; ++a)
         for (int b = 0; b < 4; ++b) p->weight[a][b] = ratio_weight[a] * volume_weight[b];
-    p->scaled_rupture = scaled_rupture(law->table, p, exp(log_volume * (1.0 / 3.0)));
+    p->scaled_rupture = scaled_rupture(table_of(law), p, exp(log_volume * (1.0 / 3.0)));
 }
 
-double cb_table_rupture(const cb_law *law, const cb_pair *pair)
+static double table_rupture(const cb_law *law, const cb_pair *pair)
 {
     (void)law;
     return pair->table.scaled_rupture * pair->r_harmonic;
@@ -242,20 +262,20 @@ double cb_table_rupture(const cb_law *law, const cb_pair *pair)
 /* The inverse of the rupture distance in the volume.  Outside the table's volumes the
  * rupture distance is its edge value times (v / v_edge)^(1/3) (scaled_rupture), inverted
  * exactly; inside, by bisection in ln v (it is monotone: a larger bridge reaches further). */
-double cb_table_rupture_volume(const cb_law *law, const cb_pair *pair_in, double gap)
+static double table_rupture_volume(const cb_law *law, const cb_pair *pair_in, double gap)
 {
     cb_pair pair = *pair_in;
     double rh = pair.r_harmonic;
     double rh3 = rh * rh * rh;
     double scaled_gap = gap / rh;
     pair.volume = table_volume_min * rh3;
-    cb_table_locate(law, &pair);
+    table_locate(law, &pair);
     if (scaled_gap <= pair.table.scaled_rupture) {
         double shrink = scaled_gap / pair.table.scaled_rupture;
         return table_volume_min * (shrink * shrink * shrink) * rh3;
     }
     pair.volume = table_volume_max * rh3;
-    cb_table_locate(law, &pair);
+    table_locate(law, &pair);
     if (scaled_gap >= pair.table.scaled_rupture) {
         double grow = scaled_gap / pair.table.scaled_rupture;
         return table_volume_max * (grow * grow * grow) * rh3; /* inf beyond double range */
@@ -264,7 +284,7 @@ double cb_table_rupture_volume(const cb_law *law, const cb_pair *pair_in, double
     for (int iteration = 0; iteration < 200 && hi - lo > 1e-14 * fabs(hi); ++iteration) {
         double mid = 0.5 * (lo + hi);
         pair.volume = exp(mid) * rh3;
-        cb_table_locate(law, &pair);
+        table_locate(law, &pair);
         if (pair.table.scaled_rupture < scaled_gap) lo = mid;
         else hi = mid;
     }
@@ -315,10 +335,10 @@ static double hermite_slope(const hermite_cell *c, double w)
             (-6 * x2 + 6 * x) * c->f1 + (3 * x2 - 2 * x) * c->h * c->m1) * (TABLE_GAPS - 1);
 }
 
-cb_status cb_table_force(const cb_law *law, const cb_pair *pair, double gap, double *force,
-                         double *stiffness)
+static cb_status table_force(const cb_law *law, const cb_pair *pair, double gap,
+                             double *force, double *stiffness)
 {
-    const struct cb_table *t = law->table;
+    const struct cb_table *t = table_of(law);
     double rupture = pair->table.scaled_rupture * pair->r_harmonic;
     double fraction = gap < rupture ? gap / rupture : 1.0;
     double w = gap_coordinate(fraction);
@@ -381,21 +401,21 @@ static double gap_rate(double w) { return w * (1.0 - w * w); }
 
 /* An upper bound of |dF/dgap| over 0 <= gap <= rupture, derived from the interpolant
  * rather than sampled (the steepest point lies in the half cell before the fold, where
- * samples of the gap rarely fall). cb_table_force's stiffness at any gap is
+ * samples of the gap rarely fall). table_force's stiffness at any gap is
  *     |H'(u)| scale / (4 rupture u (1 - u^2)),  u = w clamped into [h/2, 1 - h/2],
  * H the Hermite cubic of u's cell (0 where the force is clamped or held). On an interval
  * of a cell, max|H'| (a quadratic: ends or vertex) over the least u (1 - u^2) (an end)
  * bounds it; intervals are halved until that bound is within 1e-3 of the largest
  * stiffness found at their points, or is below it. The result is multiplied by
- * 1 + 1e-9 for the rounding of cb_table_force's own evaluation. */
-double cb_table_stiffness_bound(const cb_law *law, const cb_pair *pair)
+ * 1 + 1e-9 for the rounding of table_force's own evaluation. */
+static double table_stiffness_bound(const cb_law *law, const cb_pair *pair)
 {
     enum { CELLS = TABLE_GAPS - 1, STACK = 64, DEPTH = 40 };
     const double h = 1.0 / CELLS, half = 0.5 * h, tolerance = 1e-3;
     slope_quadratic slopes[CELLS];
     double lower = 0.0; /* the largest |H'| / rate found at a point */
     for (int k = 0; k < CELLS; ++k) {
-        hermite_cell c = cell_at(law->table, &pair->table, k * h);
+        hermite_cell c = cell_at(table_of(law), &pair->table, k * h);
         slopes[k] = slope_of(&c);
         for (int i = 0; i <= 4; ++i) {
             double u = fmin(fmax((k + 0.25 * i) * h, half), 1.0 - half);
@@ -440,7 +460,7 @@ double cb_table_stiffness_bound(const cb_law *law, const cb_pair *pair)
  * Between the two rupture distances one bridge has ruptured and the other not.
  * Above about 70 degrees the exact force near contact is small and no longer falls
  * monotonically with the gap, which the monotone interpolant does not follow. */
-cb_validity cb_table_validity(const cb_law *law)
+static cb_validity table_validity(const cb_law *law)
 {
     (void)law;
     cb_validity v = {table_volume_min, table_volume_max, 70.0 * CB_PI / 180.0,
@@ -448,3 +468,18 @@ cb_validity cb_table_validity(const cb_law *law)
                      "the table's range, checked against the exact solver (law_table.c)"};
     return v;
 }
+
+const cb_law_ops cb_table_ops = {
+    .name = "table",
+    .force = table_force,
+    .validity = table_validity,
+    .default_rupture = CB_RUPTURE_EXACT, /* the fold of the exact branch, tabulated */
+    .own_rupture = table_rupture,
+    .own_rupture_volume = table_rupture_volume,
+    .prepare = table_prepare,
+    .release = table_release,
+    .locate = table_locate,
+    .stiffness_bound = table_stiffness_bound,
+    .bridge_constant = cb_no_bridge_constant,
+    .bridge_force = cb_bridge_force_in_full,
+};

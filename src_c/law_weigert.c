@@ -67,8 +67,8 @@
 #define WEIGERT_CAP_FRACTION 0.75
 #define WEIGERT_CAP_ANGLE (50.0 * CB_PI / 180.0)
 
-cb_status cb_weigert_force(const cb_law *law, const cb_pair *pair, double gap, double *force,
-                           double *stiffness)
+static cb_status weigert_force(const cb_law *law, const cb_pair *pair, double gap,
+                               double *force, double *stiffness)
 {
     const double r = pair->r_harmonic;
     const double gamma = law->surface_tension;
@@ -142,10 +142,21 @@ cb_status cb_weigert_force(const cb_law *law, const cb_pair *pair, double gap, d
 
 /* No range is stated in the sources available here (Gladkyy 2014 §2.1 and appendix A give
  * none); where the equations themselves have no bridge the law says so (see above). */
-cb_validity cb_weigert_validity(void)
+static cb_validity weigert_validity(const cb_law *law)
 {
+    (void)law;
     cb_validity v = {0.0, HUGE_VAL, HUGE_VAL, HUGE_VAL, CB_RADIUS_HARMONIC,
                      "Weigert & Ripperger 1999 via Gladkyy & Schwarze 2014 §2.1, app. A: "
                      "no range stated"};
     return v;
 }
+
+/* Gladkyy eq. 2 applies Willett's rupture rule to every law it compares. */
+const cb_law_ops cb_weigert_ops = {
+    .name = "weigert",
+    .force = weigert_force,
+    .validity = weigert_validity,
+    .default_rupture = CB_RUPTURE_WILLETT,
+    .bridge_constant = cb_no_bridge_constant,
+    .bridge_force = cb_bridge_force_in_full,
+};

@@ -92,8 +92,8 @@ static double willett_length(const cb_pair *pair)
     return 2.0 * sqrt(pair->volume / pair->r_harmonic);
 }
 
-cb_status cb_willett_force(const cb_law *law, const cb_pair *pair, double gap, double *force,
-                           double *stiffness)
+static cb_status willett_force(const cb_law *law, const cb_pair *pair, double gap,
+                               double *force, double *stiffness)
 {
     double r = pair->r_harmonic;
     double scaled_volume = pair->volume / (r * r * r);
@@ -128,8 +128,8 @@ cb_status cb_willett_force(const cb_law *law, const cb_pair *pair, double gap, d
     return CB_OK;
 }
 
-cb_status cb_willett_reduced_force(const cb_law *law, const cb_pair *pair, double gap,
-                                   double *force, double *stiffness)
+static cb_status willett_reduced_force(const cb_law *law, const cb_pair *pair, double gap,
+                                       double *force, double *stiffness)
 {
     double r = pair->r_harmonic;
     double length = willett_length(pair);
@@ -141,18 +141,38 @@ cb_status cb_willett_reduced_force(const cb_law *law, const cb_pair *pair, doubl
     return CB_OK;
 }
 
-cb_validity cb_willett_validity(void)
+static cb_validity willett_validity(const cb_law *law)
 {
+    (void)law;
     cb_validity v = {0.0, WILLETT_VOLUME_MAX, WILLETT_THETA_MAX, HUGE_VAL, CB_RADIUS_HARMONIC,
                      "Willett et al. 2000 via Gladkyy & Schwarze 2014 §2.3: "
                      "theta < 50 deg, V/R_h^3 < 0.1"};
     return v;
 }
 
-cb_validity cb_willett_reduced_validity(void)
+static cb_validity willett_reduced_validity(const cb_law *law)
 {
+    (void)law;
     cb_validity v = {0.0, WILLETT_VOLUME_MAX, WILLETT_THETA_MAX, 1.0, CB_RADIUS_HARMONIC,
                      "Willett et al. 2000 via Gladkyy & Schwarze 2014 §2.3: equal spheres, "
                      "theta < 50 deg, V/R_h^3 < 0.1"};
     return v;
 }
+
+const cb_law_ops cb_willett_ops = {
+    .name = "willett",
+    .force = willett_force,
+    .validity = willett_validity,
+    .default_rupture = CB_RUPTURE_WILLETT, /* Gladkyy eq. 2 */
+    .bridge_constant = cb_no_bridge_constant,
+    .bridge_force = cb_bridge_force_in_full,
+};
+
+const cb_law_ops cb_willett_reduced_ops = {
+    .name = "willett/reduced",
+    .force = willett_reduced_force,
+    .validity = willett_reduced_validity,
+    .default_rupture = CB_RUPTURE_WILLETT, /* Gladkyy eq. 2 */
+    .bridge_constant = cb_no_bridge_constant,
+    .bridge_force = cb_bridge_force_in_full,
+};

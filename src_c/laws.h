@@ -26,7 +26,7 @@ typedef struct cb_pair {
     double r_harmonic;   /* 2 r1 r2 / (r1 + r2) */
     double r_geometric;  /* sqrt(r1 r2) */
     double volume;
-    cb_table_position table; /* set by cb_table_locate, for the table law only */
+    cb_table_position table; /* set by the table law's locate, for it only */
 } cb_pair;
 
 /* The pair of one call; for the table law, located in its table. */
@@ -46,33 +46,68 @@ cb_status cb_pair_force(const cb_law *law, const cb_pair *pair, double rupture, 
 typedef cb_status (*cb_force_fn)(const cb_law *law, const cb_pair *pair, double gap,
                                  double *force, double *stiffness);
 
-/* Richefeu eq. 11: 1/lambda of a bridge (kept with the bridge by derive, bridge.c). */
-double cb_richefeu_inverse_length(const cb_law *law, const cb_pair *pair);
-cb_status cb_richefeu_force(const cb_law *law, const cb_pair *pair, double gap,
-                            double *force, double *stiffness);
-cb_status cb_willett_force(const cb_law *law, const cb_pair *pair, double gap,
-                           double *force, double *stiffness);
-cb_status cb_willett_reduced_force(const cb_law *law, const cb_pair *pair, double gap,
-                                   double *force, double *stiffness);
-cb_status cb_rabinovich_force(const cb_law *law, const cb_pair *pair, double gap,
-                              double *force, double *stiffness);
-cb_status cb_rabinovich_uncorrected_force(const cb_law *law, const cb_pair *pair, double gap,
-                                          double *force, double *stiffness);
-cb_status cb_weigert_force(const cb_law *law, const cb_pair *pair, double gap,
-                           double *force, double *stiffness);
-cb_status cb_soulie_force(const cb_law *law, const cb_pair *pair, double gap,
-                          double *force, double *stiffness);
-cb_status cb_table_force(const cb_law *law, const cb_pair *pair, double gap,
-                         double *force, double *stiffness);
+/* A keyword of one law only (cb_law_configure hands it to the law): its value lives in
+ * law->parameters[k], k its index in the law's list. */
+typedef struct cb_law_keyword {
+    const char *name;        /* as cb_law_configure spells it */
+    const char *description; /* for the message refusing it for another law */
+    double default_value;    /* set by cb_law_init */
+} cb_law_keyword;
 
-/* Each law's stated validity (cb_law_validity returns these). */
-cb_validity cb_richefeu_validity(void);
-cb_validity cb_willett_validity(void);
-cb_validity cb_willett_reduced_validity(void);
-cb_validity cb_rabinovich_validity(void);
-cb_validity cb_weigert_validity(void);
-cb_validity cb_soulie_validity(void);
-cb_validity cb_table_validity(const cb_law *law);
+/* One row of the law registry: everything the dispatcher (law.c) and the bridge state
+ * (bridge.c) know of a law. Each law defines its row in its own file; an optional
+ * operation is NULL where the law has nothing of that kind. */
+typedef struct cb_law_ops {
+    const char *name;                           /* as the keyword parser spells it */
+    cb_force_fn force;                          /* F and dF/dgap, 0 <= gap <= rupture */
+    cb_validity (*validity)(const cb_law *law); /* the law's stated range */
+    cb_rupture_rule default_rupture;            /* the rule of the law's source */
+    /* a rupture rule of the law's own (CB_RUPTURE_EXACT) and its inverse; optional */
+    double (*own_rupture)(const cb_law *law, const cb_pair *pair);
+    double (*own_rupture_volume)(const cb_law *law, const cb_pair *pair, double gap);
+    /* what the law derives beyond the common constants (it may allocate: release frees
+     * it, on any initialised law); optional, both or neither */
+    cb_status (*prepare)(cb_law *law, cb_message *msg);
+    void (*release)(cb_law *law);
+    /* what one pair needs of the prepared law, found once per call; optional */
+    void (*locate)(const cb_law *law, cb_pair *pair);
+    /* an upper bound of |dF/dgap| over the bridge; optional (NULL: the force sampled) */
+    double (*stiffness_bound)(const cb_law *law, const cb_pair *pair);
+    /* the law's own keywords (keyword_count of them) and how a value is checked and
+     * stored in law->parameters[index]; optional */
+    const cb_law_keyword *keywords;
+    int keyword_count;
+    cb_status (*set_keyword)(cb_law *law, int index, const char *value, cb_message *msg);
+    /* the constant a bridge keeps for its law (cb_bridge.law_constant, finite, >= 0),
+     * derived at formation, and a stretched bridge's force (0 < gap <= its rupture
+     * distance) from the bridge's stored constants: equal to force at that gap */
+    double (*bridge_constant)(const cb_law *law, const cb_pair *pair);
+    cb_status (*bridge_force)(const cb_law *law, const cb_pair *pair,
+                              const cb_bridge *bridge, double gap, double *force);
+} cb_law_ops;
+
+/* The registry (law.c), indexed by cb_model, and each law's row. */
+extern const cb_law_ops *const cb_law_registry[];
+extern const cb_law_ops cb_richefeu_ops, cb_willett_ops, cb_willett_reduced_ops,
+    cb_rabinovich_ops, cb_rabinovich_uncorrected_ops, cb_weigert_ops, cb_soulie_ops,
+    cb_table_ops;
+
+/* The row of a law whose model is valid (a prepared law's). */
+static inline const cb_law_ops *cb_law_ops_of(const cb_law *law)
+{
+    return cb_law_registry[law->model];
+}
+
+/* For the laws that keep no constant of their own (law.c): law_constant 0, and a
+ * stretched bridge's force the law's force in full. */
+double cb_no_bridge_constant(const cb_law *law, const cb_pair *pair);
+cb_status cb_bridge_force_in_full(const cb_law *law, const cb_pair *pair,
+                                  const cb_bridge *bridge, double gap, double *force);
+
+/* A stretched bridge's force (0 < gap, under the validity and rupture rules, as
+ * cb_pair_force with the bridge's rupture distance) through its law's bridge_force. */
+cb_status cb_pair_bridge_force(const cb_law *law, const cb_pair *pair, const cb_bridge *bridge,
+                               double gap, double *force);
 
 /* Rupture rules (rupture.c), for a prepared law. */
 double cb_rupture_lian(const cb_law *law, const cb_pair *pair);
@@ -81,16 +116,6 @@ double cb_rupture_willett_unequal(const cb_law *law, const cb_pair *pair);
 double cb_rupture_volume_lian(const cb_law *law, const cb_pair *pair, double gap);
 double cb_rupture_volume_willett(const cb_law *law, const cb_pair *pair, double gap);
 double cb_rupture_volume_willett_unequal(const cb_law *law, const cb_pair *pair, double gap);
-
-/* The table law (law_table.c). */
-cb_status cb_table_create(double contact_angle, struct cb_table **table, cb_message *msg);
-void cb_table_destroy(struct cb_table *table);
-double cb_table_contact_angle(const struct cb_table *table);
-void cb_table_locate(const cb_law *law, cb_pair *pair);
-double cb_table_rupture(const cb_law *law, const cb_pair *pair);
-double cb_table_rupture_volume(const cb_law *law, const cb_pair *pair, double gap);
-/* An upper bound of |dF/dgap| of cb_table_force over 0 <= gap <= the table's rupture. */
-double cb_table_stiffness_bound(const cb_law *law, const cb_pair *pair);
 
 /* Write a formatted message if msg is not NULL; returns status for chaining. */
 cb_status cb_fail(cb_message *msg, cb_status status, const char *format, ...)

@@ -395,7 +395,7 @@ static void derived_constants(void)
      * c = 0.9, written out here; a stretched bridge's force from it equals cb_force bit for
      * bit (the same product), and 0 beyond the rupture distance */
     const double lambda = 0.9 * sqrt(v / (2.0 * r1 * r2 / (r1 + r2)) * (r1 / r2));
-    CHECK(fabs(b.inverse_decay_length * lambda - 1.0) < 1e-14);
+    CHECK(fabs(b.law_constant * lambda - 1.0) < 1e-14);
     for (double gap = 0.0; gap <= 1.2 * d; gap += 0.05 * d) {
         cb_bridge s = b;
         double ref = 0.0, f = -1.0;
@@ -514,7 +514,7 @@ static void derived_constants(void)
         bad_volume.volume = broken[k];
         bad_flag.active = k == 0 ? NAN : 0.5;
         bad_rupture.rupture = broken[k];
-        bad_decay.inverse_decay_length = broken[k];
+        bad_decay.law_constant = broken[k];
         CHECK(!cb_bridge_held(&law, r1, r2, -1e-7, &bad_force, &quick));
         CHECK(!cb_bridge_held(&law, r1, r2, -1e-7, &bad_volume, &quick));
         CHECK(!cb_bridge_held(&law, r1, r2, -1e-7, &bad_flag, &quick));
@@ -524,7 +524,7 @@ static void derived_constants(void)
     /* stretched, the call where the stored constants do not give the force: 1/lambda 0
      * (the full evaluation), a strict law, another law reading the bridge */
     cb_bridge no_decay = b;
-    no_decay.inverse_decay_length = 0.0;
+    no_decay.law_constant = 0.0;
     CHECK(!cb_bridge_held(&law, r1, r2, 0.5 * d, &no_decay, &quick));
     cb_law strict_copy = law;
     strict_copy.validity = CB_VALIDITY_STRICT;

@@ -426,7 +426,7 @@ static void test_configure_once(void)
     CHECK(mentions(&msg, words, 3));
     CHECK(law.surface_tension == 0.02); /* the first value stands, the repeat changes nothing */
     CHECK_STATUS(cb_law_configure_once(&law, &given, "c", "0.7", &msg), CB_ERR_RANGE);
-    CHECK(law.richefeu_c == 0.8);
+    CHECK(law.parameters[0] == 0.8);
     CHECK_STATUS(cb_law_configure_once(&law, &given, "colour", "red", &msg),
                  CB_ERR_UNKNOWN_KEYWORD);
     cb_keywords_given fresh = {0};
