@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Run one LAMMPS scene with two builds of the capbridge plugin and compare what they wrote.
 
-Usage: scripts/same_trajectory.py A.so B.so SCENE [-size S] [-np N] [-var NAME VALUE ...]
+Usage: scripts/same_trajectory.py A.so B.so SCENE [-fixed-bins SORT NEIGH] [-size S] [-np N]
+                                  [-var NAME VALUE ...]
 
 For a change that must not move a trajectory (a refactoring, a rule moved into the core):
 both runs use the current deck (inputs/SCENE/in.lammps through scripts/scene.sh, which must
@@ -10,6 +11,13 @@ dump the deck writes (files *.dump, snap.*.txt) and the thermo rows of log.lammp
 the largest difference relative to the largest magnitude of its column and file, per file,
 and exits 1 if a file is missing in one run or the row counts differ.  It sets no tolerance:
 round-off grows along a chaotic trajectory, so the reader judges the numbers it prints.
+
+-fixed-bins SORT NEIGH: both runs use a copy of the deck with `atom_modify sort 1000 SORT`
+and `neigh_modify binsize NEIGH` (lengths in the deck's units) before its first run.  LAMMPS
+derives both bin sizes from the neighbor cutoff, and the bins set the order of the atoms and
+of their neighbors, hence of every force sum: a change of the cutoff alone (the bridges'
+reach) reorders the sums and moves a trajectory by round-off that then grows.  With the bins
+fixed, a change that is only that gives identical numbers.
 """
 import glob
 import os
@@ -64,6 +72,25 @@ def largest_difference(a, b):
     return worst
 
 
+def fixed_bins_deck(scene, sort_bin, neigh_bin, out):
+    """A copy of the scene's LAMMPS deck with both bin sizes fixed before its first run."""
+    for value in (sort_bin, neigh_bin):
+        if numbers(value) is None or len(numbers(value)) != 1 or float(value) <= 0.0:
+            fail(f"-fixed-bins takes two positive lengths, not '{value}'")
+    with open(os.path.join(TOP, "inputs", scene, "in.lammps")) as f:
+        lines = f.read().splitlines()
+    first_run = next((k for k, line in enumerate(lines) if line.split()[:1] == ["run"]), None)
+    if first_run is None:
+        fail(f"inputs/{scene}/in.lammps has no run command")
+    lines[first_run:first_run] = [f"atom_modify sort 1000 {sort_bin}",
+                                  f"neigh_modify binsize {neigh_bin}"]
+    os.makedirs(out, exist_ok=True)
+    path = os.path.join(out, "in.fixed-bins.lammps")
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    return path
+
+
 def main():
     args = sys.argv[1:]
     if len(args) < 3:
@@ -73,9 +100,15 @@ def main():
         if not os.path.isfile(build):
             fail(f"no plugin file '{build}'")
     out = os.path.join(TOP, "out", "same_trajectory")
+    deck = {}
+    if options[:1] == ["-fixed-bins"]:
+        if len(options) < 3:
+            fail("-fixed-bins needs two lengths: SORT NEIGH")
+        deck = {"CAPBRIDGE_DECK": fixed_bins_deck(scene, options[1], options[2], out)}
+        options = options[3:]
     for label, build in zip("AB", builds):
         env = dict(os.environ, CAPBRIDGE_PLUGIN=os.path.realpath(build),
-                   CAPBRIDGE_SKIP_CONFIGURE="1")
+                   CAPBRIDGE_SKIP_CONFIGURE="1", **deck)
         run = subprocess.run([os.path.join(TOP, "scripts", "scene.sh"), "lammps", scene,
                               "-out", os.path.join(out, label)] + options, env=env,
                              stdout=subprocess.DEVNULL)

@@ -15,6 +15,8 @@
 # The deck is inputs/SCENE/in.ENGINE. It runs in the output directory and gets the variables
 # size, inputs (the scene directory), and for LAMMPS plugin (the capbridge plugin).
 # Set CAPBRIDGE_SKIP_CONFIGURE=1 when build/ is known to be current (the tests do).
+# CAPBRIDGE_DECK=FILE runs FILE in place of the scene's deck, with the scene's variables and
+# files (scripts/same_trajectory.py -fixed-bins gives it a copy with two commands added).
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 usage() { sed -n '4,17p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
@@ -22,7 +24,7 @@ usage() { sed -n '4,17p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 engine=$1 scene=$2
 shift 2
 case $engine in lammps|liggghts) ;; *) echo "scene.sh: unknown engine '$engine' (allowed: lammps, liggghts)" >&2; exit 2 ;; esac
-deck="$top/inputs/$scene/in.$engine"
+deck=${CAPBRIDGE_DECK:-$top/inputs/$scene/in.$engine}
 [ -f "$deck" ] || { echo "scene.sh: no deck $deck (scenes: $(ls "$top/inputs" | tr '\n' ' '))" >&2; exit 2; }
 np=2 size=default out="" vars=()
 need() {  # need OPTION COUNT ARGS...: the option has its values
