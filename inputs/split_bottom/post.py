@@ -15,6 +15,8 @@ torque.txt and the snap.*.txt snapshots.  Writes into OUT_DIR:
   <run>_band.csv          R_C and W of the fit omega/Omega = 0.5 + 0.5 erf((r - R_C)/W)
                           (Gladkyy eq. 13) for every height
   <run>_stress.csv        p, tau, shear rate per (r, z) cell and whether it is in the band
+  shared_mu.csv           tau = mu p + c_V with one mu per engine over all its runs and one c
+                          per volume, with standard errors (shared_mu.py, Gladkyy's Fig. 7 fit)
   band_shift.csv          per engine and volume over its runs (seeds, laws): R_C at mid
                           height, R_C and R_C + W over the upper half, over Rs, with standard
                           errors, and each wet group's shift from the dry group
@@ -46,6 +48,8 @@ import sys
 import warnings
 
 import numpy as np
+
+from shared_mu import write_shared_mu
 
 OMEGA_PAPER = 2 * math.pi / 100.0
 GDOT_PAPER = 0.12
@@ -422,6 +426,13 @@ def write_outputs(results, out):
                "bridges", "bridges_per_grain_z", "inertial_number", "band_rate_min_per_s",
                "seed"], rows)
     write_csv(os.path.join(out, "band_shift.csv"), *band_shift_rows(results))
+    try:
+        write_shared_mu(os.path.join(out, "shared_mu.csv"),
+                        [{"engine": engine_label(a["params"]), "volume": a["params"]["volume_nl"],
+                          "seed": int(a["params"].get("seed", 0)), "p": a["p"][a["band"]],
+                          "tau": a["tau"][a["band"]]} for a in results])
+    except ValueError as e:
+        print(f"post.py: no shared_mu.csv: {e}", file=sys.stderr)
 
 
 def plot(results, out):
