@@ -159,7 +159,27 @@ const char *cb_model_name(cb_model model);
 const char *cb_law_names(void);
 cb_status cb_model_from_name(const char *name, cb_model *model);
 
-/* Defaults: rupture = law default, overlap = contact, validity = extend, c = 0.9. */
+/* 1 when the law's force is interpolated in a table the law builds (the table law), 0 when
+ * it is a closed form; 0 for a value that is no model.  A property of the law's registry
+ * row: the CLI's "cheapest closed-form law" reads it. */
+int cb_model_tabulated(cb_model model);
+
+/* A keyword of one law only, as its registry row lists it: cb_law_configure takes it for
+ * that law and refuses it, by name, for every other.  The CLI's help and the engines'
+ * keywords are made from these (LIGGGHTS spells one law name + "_" + name: richefeu_c). */
+typedef struct cb_law_keyword {
+    const char *name;         /* as cb_law_configure spells it */
+    const char *description;  /* one line, for the help and for the message refusing it */
+    const char *default_text; /* the value cb_law_init gives it, as a user would write it */
+} cb_law_keyword;
+
+/* The number of a law's own keywords (0 for a value that is no model), and the index-th of
+ * them in its row's order (NULL unless 0 <= index < cb_law_keyword_count(model)). */
+int cb_law_keyword_count(cb_model model);
+const cb_law_keyword *cb_law_keyword_of(cb_model model, int index);
+
+/* Defaults: rupture = law default, overlap = contact, validity = extend, each of the law's
+ * own keywords its row's default_text (richefeu: c = 0.9). */
 cb_status cb_law_init(cb_law *law, cb_model model, double surface_tension, double contact_angle);
 
 /* Keyword interface shared by the CLI and the engine bindings. Keywords:
@@ -168,9 +188,8 @@ cb_status cb_law_init(cb_law *law, cb_model model, double surface_tension, doubl
  *   rupture lian|willett|willett/unequal|default
  *   overlap contact|none
  *   validity extend|strict
- *   c <value>                  Richefeu's constant (richefeu only, > 0)
- * The last is a law's own keyword: each law lists its own in its registry row (laws.h),
- * and another law refuses it by name.
+ * and each law's own keywords (cb_law_keyword_of; richefeu: c <value>, Richefeu's
+ * constant, > 0): another law refuses one by name.
  * On error, msg names the keyword, the value and what is allowed. */
 cb_status cb_law_configure(cb_law *law, const char *keyword, const char *value, cb_message *msg);
 

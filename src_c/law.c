@@ -1,7 +1,9 @@
 /* law.c — a law as a value: the registry of the laws, names, keywords, preparation, and
  * the force dispatcher that applies the overlap, rupture and validity rules around each
  * law's formula.  Adding a law: its file with its row (cb_law_ops, laws.h), its cb_model
- * value, its row below and its name in cb_law_names; tests/test_registry.c checks them. */
+ * value, its row below and its name in cb_law_names; tests/test_registry.c checks them.
+ * What the CLI and the engines know of a law (its name, its own keywords, whether it is
+ * tabulated) they read from its row through the functions below. */
 #include "laws.h"
 
 #include <math.h>
@@ -53,6 +55,22 @@ const char *cb_law_names(void)
            "weigert, soulie, table";
 }
 
+int cb_model_tabulated(cb_model model)
+{
+    return row_of(model) ? row_of(model)->tabulated : 0;
+}
+
+int cb_law_keyword_count(cb_model model)
+{
+    return row_of(model) ? row_of(model)->keyword_count : 0;
+}
+
+const cb_law_keyword *cb_law_keyword_of(cb_model model, int index)
+{
+    if (index < 0 || index >= cb_law_keyword_count(model)) return NULL;
+    return &row_of(model)->keywords[index];
+}
+
 cb_status cb_model_from_name(const char *name, cb_model *model)
 {
     if (!name || !model) return CB_ERR_NULL;
@@ -98,9 +116,13 @@ cb_status cb_law_init(cb_law *law, cb_model model, double surface_tension, doubl
     law->model = model;
     law->surface_tension = surface_tension;
     law->contact_angle = contact_angle;
+    /* each default through the row's own reader, as a user's value (test_registry: each
+     * default is read) */
     const cb_law_ops *ops = cb_law_registry[model];
-    for (int k = 0; k < ops->keyword_count; ++k)
-        law->parameters[k] = ops->keywords[k].default_value;
+    for (int k = 0; k < ops->keyword_count; ++k) {
+        status = ops->set_keyword(law, k, ops->keywords[k].default_text, NULL);
+        if (status != CB_OK) return status;
+    }
     law->rupture = CB_RUPTURE_DEFAULT;
     law->overlap = CB_OVERLAP_CONTACT;
     law->validity = CB_VALIDITY_EXTEND;

@@ -58,7 +58,7 @@ static cb_status richefeu_bridge_force(const cb_law *law, const cb_pair *pair,
 }
 
 static const cb_law_keyword richefeu_keywords[] = {
-    {"c", "Richefeu's constant", 0.9}, /* Richefeu 2007 after eq. 9: c ~ 0.9 */
+    {"c", "Richefeu's constant", "0.9"}, /* Richefeu 2007 after eq. 9: c ~ 0.9 */
 };
 
 static cb_status richefeu_set_keyword(cb_law *law, int index, const char *value,
@@ -66,7 +66,8 @@ static cb_status richefeu_set_keyword(cb_law *law, int index, const char *value,
 {
     double number = 0.0;
     if (!cb_parse_number(value, &number) || number <= 0.0)
-        return cb_fail(msg, CB_ERR_RANGE, "c '%s': must be a number > 0 (default 0.9)", value);
+        return cb_fail(msg, CB_ERR_RANGE, "c '%s': must be a number > 0 (default %s)", value,
+                       richefeu_keywords[index].default_text);
     law->parameters[index] = number;
     return CB_OK;
 }

@@ -474,6 +474,7 @@ const cb_law_ops cb_table_ops = {
     .force = table_force,
     .validity = table_validity,
     .default_rupture = CB_RUPTURE_EXACT, /* the fold of the exact branch, tabulated */
+    .tabulated = 1,
     .own_rupture = table_rupture,
     .own_rupture_volume = table_rupture_volume,
     .prepare = table_prepare,

@@ -46,14 +46,6 @@ cb_status cb_pair_force(const cb_law *law, const cb_pair *pair, double rupture, 
 typedef cb_status (*cb_force_fn)(const cb_law *law, const cb_pair *pair, double gap,
                                  double *force, double *stiffness);
 
-/* A keyword of one law only (cb_law_configure hands it to the law): its value lives in
- * law->parameters[k], k its index in the law's list. */
-typedef struct cb_law_keyword {
-    const char *name;        /* as cb_law_configure spells it */
-    const char *description; /* for the message refusing it for another law */
-    double default_value;    /* set by cb_law_init */
-} cb_law_keyword;
-
 /* One row of the law registry: everything the dispatcher (law.c) and the bridge state
  * (bridge.c) know of a law. Each law defines its row in its own file; an optional
  * operation is NULL where the law has nothing of that kind. */
@@ -62,6 +54,8 @@ typedef struct cb_law_ops {
     cb_force_fn force;                          /* F and dF/dgap, 0 <= gap <= rupture */
     cb_validity (*validity)(const cb_law *law); /* the law's stated range */
     cb_rupture_rule default_rupture;            /* the rule of the law's source */
+    int tabulated; /* 1: the force is interpolated in a table the law builds, not a closed
+                    * form (cb_model_tabulated) */
     /* a rupture rule of the law's own (CB_RUPTURE_EXACT) and its inverse; optional */
     double (*own_rupture)(const cb_law *law, const cb_pair *pair);
     double (*own_rupture_volume)(const cb_law *law, const cb_pair *pair, double gap);
@@ -73,8 +67,9 @@ typedef struct cb_law_ops {
     void (*locate)(const cb_law *law, cb_pair *pair);
     /* an upper bound of |dF/dgap| over the bridge; optional (NULL: the force sampled) */
     double (*stiffness_bound)(const cb_law *law, const cb_pair *pair);
-    /* the law's own keywords (keyword_count of them) and how a value is checked and
-     * stored in law->parameters[index]; optional */
+    /* the law's own keywords (keyword_count of them: cb_law_keyword in capbridge.h; the
+     * value of keywords[k] lives in law->parameters[k]) and how a value is checked and
+     * stored in law->parameters[index] (cb_law_init sets each default through it); optional */
     const cb_law_keyword *keywords;
     int keyword_count;
     cb_status (*set_keyword)(cb_law *law, int index, const char *value, cb_message *msg);

@@ -1,6 +1,7 @@
 /* test_registry.c — the law registry (law.c, each law's row in its file) is consistent:
  * every row complete, the names unique and the ones the parser knows, each law's
- * validity its own, each law's keywords its own, and each law's held or stretched bridge
+ * validity its own, each law's keywords its own (and what the public enumeration and the
+ * tabulated flag return), and each law's held or stretched bridge
  * (its bridge_force from the constants kept at formation) the force of cb_force bit for
  * bit.  Argument "closed-form": the table law (whose table takes minutes to build under
  * the sanitizers) is left out of the force part. */
@@ -28,8 +29,41 @@ static void rows_complete(void)
         CHECK(!ops->keywords == (ops->keyword_count == 0));
         CHECK(!ops->set_keyword == (ops->keyword_count == 0));
         for (int k = 0; k < ops->keyword_count; ++k)
-            CHECK(ops->keywords[k].name[0] && ops->keywords[k].description[0]);
+            CHECK(ops->keywords[k].name[0] && ops->keywords[k].description[0] &&
+                  ops->keywords[k].default_text[0]);
+        CHECK(ops->tabulated == 0 || ops->tabulated == 1);
     }
+}
+
+/* The public enumeration of a law's own keywords (what the CLI's help and the engines'
+ * keywords are made from) returns its row's list, in order, and nothing beyond it;
+ * Richefeu's is c, 0.9 by default (Richefeu 2007 after eq. 9). */
+static void keywords_enumerated(void)
+{
+    for (int m = 0; m < CB_MODEL_COUNT; ++m) {
+        const cb_law_ops *ops = cb_law_registry[m];
+        CHECK(cb_law_keyword_count((cb_model)m) == ops->keyword_count);
+        for (int k = 0; k < ops->keyword_count; ++k)
+            CHECK(cb_law_keyword_of((cb_model)m, k) == &ops->keywords[k]);
+        CHECK(cb_law_keyword_of((cb_model)m, -1) == NULL);
+        CHECK(cb_law_keyword_of((cb_model)m, ops->keyword_count) == NULL);
+    }
+    CHECK(cb_law_keyword_count(CB_MODEL_COUNT) == 0);
+    CHECK(cb_law_keyword_of(CB_MODEL_COUNT, 0) == NULL);
+    CHECK(cb_law_keyword_count(CB_MODEL_RICHEFEU) == 1);
+    const cb_law_keyword *c = cb_law_keyword_of(CB_MODEL_RICHEFEU, 0);
+    CHECK(c && strcmp(c->name, "c") == 0 && strcmp(c->default_text, "0.9") == 0);
+    cb_law richefeu;
+    CHECK_STATUS(cb_law_init(&richefeu, CB_MODEL_RICHEFEU, 0.072, 0.0), CB_OK);
+    CHECK(richefeu.parameters[0] == 0.9);
+}
+
+/* Only the table law is tabulated: the CLI's cheapest closed-form law leaves it out. */
+static void tabulated_only_table(void)
+{
+    for (int m = 0; m < CB_MODEL_COUNT; ++m)
+        CHECK(cb_model_tabulated((cb_model)m) == (m == CB_MODEL_TABLE));
+    CHECK(cb_model_tabulated(CB_MODEL_COUNT) == 0);
 }
 
 /* Names unique, through cb_model_from_name and cb_model_name both ways, and
@@ -97,7 +131,9 @@ static void keywords_own(void)
             const cb_law_keyword *kw = &ops->keywords[k];
             cb_law law, changed;
             CHECK_STATUS(cb_law_init(&law, (cb_model)m, 0.072, 0.0), CB_OK);
-            CHECK(same_bits(law.parameters[k], kw->default_value));
+            double default_value = -1.0;
+            CHECK(cb_parse_number(kw->default_text, &default_value));
+            CHECK(same_bits(law.parameters[k], default_value));
             changed = law;
             cb_keywords_given given = {0};
             CHECK_STATUS(cb_law_configure_once(&changed, &given, kw->name, "0.625", &msg), CB_OK);
@@ -200,6 +236,8 @@ int main(int argc, char **argv)
     names();
     validity_own();
     keywords_own();
+    keywords_enumerated();
+    tabulated_only_table();
     bridges_equal_force(with_table);
     return check_report(argv[0]);
 }

@@ -322,9 +322,18 @@ void cli_print_law_help(FILE *out)
             "  theta DEG        contact angle, 0 <= theta < 90 degrees (default 0)\n"
             "  rupture RULE     lian | willett | willett/unequal | default (table also: exact)\n"
             "  overlap RULE     contact | none: the force in overlap (default contact)\n"
-            "  validity RULE    extend | strict: outside the law's validity (default extend)\n"
-            "  c VALUE          Richefeu's constant, richefeu only (default 0.9)\n",
+            "  validity RULE    extend | strict: outside the law's validity (default extend)\n",
             cb_law_names(), CLI_DEFAULT_GAMMA);
+    /* each law's own keywords, as its registry row lists them */
+    for (int m = 0; m < CB_MODEL_COUNT; ++m) {
+        for (int k = 0; k < cb_law_keyword_count((cb_model)m); ++k) {
+            const cb_law_keyword *keyword = cb_law_keyword_of((cb_model)m, k);
+            char usage[64];
+            snprintf(usage, sizeof usage, "%s VALUE", keyword->name);
+            fprintf(out, "  %-16s %s, %s only (default %s)\n", usage, keyword->description,
+                    cb_model_name((cb_model)m), keyword->default_text);
+        }
+    }
 }
 
 void cli_print_number(FILE *out, double value) { fprintf(out, "%.17g", value); }

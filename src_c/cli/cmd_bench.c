@@ -39,7 +39,7 @@ int cmd_bench(int argc, char **argv)
     for (int m = 0; m < prepared; ++m) cb_law_release(&laws[m]);
     if (failed) return 1;
     for (int m = 0; m < CB_MODEL_COUNT; ++m)
-        if (m != CB_MODEL_TABLE && ns[m] < cheapest) cheapest = ns[m];
+        if (!cb_model_tabulated((cb_model)m) && ns[m] < cheapest) cheapest = ns[m];
     printf("law,ns_per_call,ratio_to_cheapest_closed_form\n");
     for (int m = 0; m < CB_MODEL_COUNT; ++m)
         printf("%s,%.2f,%.3f\n", cb_model_name((cb_model)m), ns[m], ns[m] / cheapest);

@@ -244,7 +244,7 @@ int cmd_report(int argc, char **argv)
     free(grid);
     if (!ok || !measure_costs(reports)) return 1;
     for (int m = 0; m < CB_MODEL_COUNT; ++m)
-        if (m != CB_MODEL_TABLE && reports[m].ns_per_call < cheapest)
+        if (!cb_model_tabulated((cb_model)m) && reports[m].ns_per_call < cheapest)
             cheapest = reports[m].ns_per_call;
 
     printf("Errors against the exact Laplace-Young solution (relative, in %%), %ld cases and "

@@ -190,6 +190,16 @@ grep -q "^  pulloff" "$TMP/out" || fail "capbridge --help lacks the subcommand l
 "$CB" force --help >"$TMP/out"
 checks=$((checks + 1))
 grep -qF "$LAWS" "$TMP/out" || fail "capbridge force --help lacks the laws"
+# a law's own keyword in the help as its registry row states it: the description the core's
+# refusal for another law gives, the default its refusal of a bad value gives
+"$CB" force willett c 0.9 $G --gap 0 >/dev/null 2>"$TMP/err"
+description=$(sed -n "s/.*keyword 'c' (\(.*\)) applies to law richefeu only.*/\1/p" "$TMP/err")
+"$CB" force richefeu c 0 $G --gap 0 >/dev/null 2>"$TMP/err"
+default=$(sed -n 's/.*(default \(.*\))$/\1/p' "$TMP/err")
+checks=$((checks + 1))
+[ -n "$description" ] && [ -n "$default" ] &&
+    grep -qxF "  c VALUE          $description, richefeu only (default $default)" "$TMP/out" ||
+    fail "capbridge force --help lacks c as the row gives it ('$description', default '$default'): $(grep -F 'c VALUE' "$TMP/out")"
 
 
 # reference: the same conventions as the other subcommands
