@@ -299,86 +299,119 @@ static int parse_count(const char *text, long *count)
     return 1;
 }
 
-/* Reads the whole file; returns 0, or -1 on a read or memory failure. */
+/* Where a LAMMPS dump is: its section, and the count its NUMBER OF ENTRIES announced. */
+typedef struct dump_state {
+    int in_entries;                 /* inside an ITEM: ENTRIES section */
+    int expect_count;               /* the next line is the NUMBER OF ENTRIES */
+    long announced, announced_line; /* the count (-1: none for this section) and its line */
+    long entries, entries_line;     /* rows of this ENTRIES section, and its ITEM: line */
+} dump_state;
+
+/* The end of an ENTRIES section (at the next ITEM: line or the end of the file): its rows
+ * against the count announced. */
+static void dump_section_end(replay *r, const dump_state *d)
+{
+    if (d->in_entries && d->announced >= 0 && d->entries != d->announced)
+        row_problem(r, d->entries_line,
+                    "ITEM: NUMBER OF ENTRIES (line %ld) announced %ld rows, this ENTRIES "
+                    "section has %ld",
+                    d->announced_line, d->announced, d->entries);
+}
+
+/* An ITEM: line: ends the section before it and starts the next. */
+static void dump_item(replay *r, dump_state *d, const char *text, long line)
+{
+    const char *item = text + 5;
+    while (is_blank_char(*item)) ++item;
+    if (d->expect_count) {
+        row_problem(r, line, "ITEM: NUMBER OF ENTRIES is not followed by a count");
+        d->expect_count = 0;
+    }
+    dump_section_end(r, d);
+    if (d->in_entries) d->announced = -1;
+    d->in_entries = strncmp(item, "ENTRIES", 7) == 0;
+    d->expect_count = strncmp(item, "NUMBER OF ENTRIES", 17) == 0;
+    if (d->in_entries) {
+        d->entries = 0;
+        d->entries_line = line;
+    }
+}
+
+/* A line of a dump (text is modified): an ITEM: line, the count after NUMBER OF ENTRIES, a
+ * row of an ENTRIES section, or a line of another section (not data). */
+static void dump_line(replay *r, dump_state *d, char *text, long line)
+{
+    if (strncmp(text, "ITEM:", 5) == 0) {
+        dump_item(r, d, text, line);
+        return;
+    }
+    if (d->expect_count) {
+        d->expect_count = 0;
+        if (!parse_count(text, &d->announced)) {
+            cli_echo shown;
+            row_problem(r, line,
+                        "ITEM: NUMBER OF ENTRIES: %s is not a count: allowed a whole number "
+                        "from 0 to %ld, in digits",
+                        cli_quote(&shown, text, strlen(text)), LONG_MAX);
+            return;
+        }
+        d->announced_line = line;
+        return;
+    }
+    if (d->in_entries) {
+        ++d->entries;
+        replay_row(r, text, line);
+    }
+}
+
+/* A dump line refused unread (a NUL byte): it stands for the count line or a row. */
+static void dump_refused_line(dump_state *d)
+{
+    if (d->expect_count) d->expect_count = 0;
+    else if (d->in_entries) ++d->entries;
+}
+
+/* The end of a dump: its last section's rows, and a count still awaited. */
+static void dump_end(replay *r, const dump_state *d, long last_line)
+{
+    dump_section_end(r, d);
+    if (d->expect_count)
+        row_problem(r, last_line, "ITEM: NUMBER OF ENTRIES is not followed by a count");
+}
+
+/* A line of a plain table (text is modified): a '#' comment, the header (the first other
+ * line, when one of its fields is not a number), or a row. */
+static void table_line(replay *r, int *header_seen, char *text, long line)
+{
+    if (text[0] == '#') return;
+    if (!*header_seen) {
+        *header_seen = 1;
+        if (!numeric_row(r, text)) return;
+    }
+    replay_row(r, text, line);
+}
+
+/* Reads the whole file, a dump or a plain table by its first non-blank line; returns 0, or
+ * -1 on a read or memory failure. */
 static int replay_file(replay *r, FILE *file)
 {
     line_reader reader = {file, NULL, 0, 0, 0};
-    int got;
-    int dump = -1;              /* unknown until the first non-blank line */
-    int header_seen = 0;        /* plain tables */
-    int in_entries = 0;         /* dump: inside an ITEM: ENTRIES section */
-    int expect_count = 0;       /* dump: the next line is the NUMBER OF ENTRIES */
-    long announced = -1, announced_line = 0, entries = 0, entries_line = 0;
-
+    dump_state dump_at = {0, 0, -1, 0, 0, 0};
+    int dump = -1; /* unknown until the first non-blank line */
+    int header_seen = 0, got;
     while ((got = read_line(&reader)) == 1) {
-        char *text = reader.text;
-        long line = reader.number;
         if (reader.nul_at) {
-            row_problem(r, line, "a NUL byte at character %zu: a line must be text",
+            row_problem(r, reader.number, "a NUL byte at character %zu: a line must be text",
                         reader.nul_at);
-            if (dump == 1 && expect_count) expect_count = 0; /* the count line refused */
-            else if (dump == 1 && in_entries) ++entries;    /* a row of the section, refused */
+            if (dump == 1) dump_refused_line(&dump_at);
             continue;
         }
-        if (is_blank_line(text)) continue;
-        if (dump < 0) dump = strncmp(text, "ITEM:", 5) == 0;
-        if (!dump) {
-            if (text[0] == '#') continue;
-            if (!header_seen) {
-                header_seen = 1;
-                if (!numeric_row(r, text)) continue; /* the header */
-            }
-            replay_row(r, text, line);
-            continue;
-        }
-        if (strncmp(text, "ITEM:", 5) == 0) {
-            const char *item = text + 5;
-            while (is_blank_char(*item)) ++item;
-            if (expect_count) {
-                row_problem(r, line, "ITEM: NUMBER OF ENTRIES is not followed by a count");
-                expect_count = 0;
-            }
-            if (in_entries && announced >= 0 && entries != announced)
-                row_problem(r, entries_line,
-                            "ITEM: NUMBER OF ENTRIES (line %ld) announced %ld rows, this "
-                            "ENTRIES section has %ld",
-                            announced_line, announced, entries);
-            if (in_entries) announced = -1;
-            in_entries = strncmp(item, "ENTRIES", 7) == 0;
-            expect_count = strncmp(item, "NUMBER OF ENTRIES", 17) == 0;
-            if (in_entries) {
-                entries = 0;
-                entries_line = line;
-            }
-            continue;
-        }
-        if (expect_count) {
-            expect_count = 0;
-            if (!parse_count(text, &announced)) {
-                cli_echo shown;
-                row_problem(r, line,
-                            "ITEM: NUMBER OF ENTRIES: %s is not a count: allowed a whole "
-                            "number from 0 to %ld, in digits",
-                            cli_quote(&shown, text, strlen(text)), LONG_MAX);
-                continue;
-            }
-            announced_line = line;
-            continue;
-        }
-        if (in_entries) {
-            ++entries;
-            replay_row(r, text, line);
-        }
+        if (is_blank_line(reader.text)) continue;
+        if (dump < 0) dump = strncmp(reader.text, "ITEM:", 5) == 0;
+        if (dump) dump_line(r, &dump_at, reader.text, reader.number);
+        else table_line(r, &header_seen, reader.text, reader.number);
     }
-    if (got == 1 || got == 0) {
-        if (dump == 1 && in_entries && announced >= 0 && entries != announced)
-            row_problem(r, entries_line,
-                        "ITEM: NUMBER OF ENTRIES (line %ld) announced %ld rows, this ENTRIES "
-                        "section has %ld",
-                        announced_line, announced, entries);
-        if (expect_count)
-            row_problem(r, reader.number, "ITEM: NUMBER OF ENTRIES is not followed by a count");
-    }
+    if (got == 0 && dump == 1) dump_end(r, &dump_at, reader.number);
     free(reader.text);
     return got < 0 ? -1 : 0;
 }
