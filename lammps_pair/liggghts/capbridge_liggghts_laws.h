@@ -4,8 +4,8 @@
  * Part of capbridge (lammps_pair/liggghts/). Compiled inside LIGGGHTS: C++98 and C++11.
  *
  * The law of a pair of types is the core's cb_law of the model's keywords (law, rupture,
- * overlap, validity, richefeu_c), the surface tension and the mean of the two types' contact
- * angles.  The laws are built again only when one of these changed (the table law builds its
+ * overlap, validity, and the law's own keywords such as richefeu_c), the surface tension
+ * and the mean of the two types' contact angles.  The laws are built again only when one of these changed (the table law builds its
  * table in cb_law_prepare), so that a run after a run costs nothing here.
  */
 #ifndef CAPBRIDGE_LIGGGHTS_LAWS_H_
@@ -20,11 +20,61 @@
 
 namespace capbridge_liggghts {
 
+/* A law's own keyword as `cohesion capillary` spells it: the law's name, '_', the core's
+ * keyword (Richefeu's c is `richefeu_c`, the name users have), one per keyword of the core's
+ * registry rows (cb_law_keyword_of): a new law's keywords need no edit here. */
+struct LawKeywordWord {
+    cb_model model;
+    int index;             // in the law's list (cb_law_keyword_of)
+    std::string spelling;  // law name + "_" + keyword
+    std::string value;     // as the user gave it
+    bool given;
+};
+
+inline std::string law_keyword_spelling(const cb_model model, const int index)
+{
+    return std::string(cb_model_name(model)) + "_" + cb_law_keyword_of(model, index)->name;
+}
+
+/* Every law's own keywords, in the order of the registry */
+inline std::vector<LawKeywordWord> law_keyword_words()
+{
+    std::vector<LawKeywordWord> words;
+    for (int m = 0; m < CB_MODEL_COUNT; ++m)
+        for (int k = 0; k < cb_law_keyword_count((cb_model)m); ++k) {
+            LawKeywordWord word = {(cb_model)m, k, law_keyword_spelling((cb_model)m, k), "",
+                                   false};
+            words.push_back(word);
+        }
+    return words;
+}
+
+/* The word check of a law's own keyword (as settings.h's checks): the core reads the value
+ * as it would for its law (cb_law_configure), so that a bad value stops at the keyword. */
+inline bool check_law_keyword(const std::string &spelling, const std::string &value,
+                              std::string &why)
+{
+    const std::vector<LawKeywordWord> words = law_keyword_words();
+    for (size_t w = 0; w < words.size(); ++w) {
+        if (words[w].spelling != spelling) continue;
+        cb_law scratch;
+        cb_message msg;
+        msg.text[0] = '\0';
+        cb_law_init(&scratch, words[w].model, 1.0, 0.0);
+        const char *keyword = cb_law_keyword_of(words[w].model, words[w].index)->name;
+        if (cb_law_configure(&scratch, keyword, value.c_str(), &msg) == CB_OK) return true;
+        why = "cohesion model capillary: keyword '" + spelling + "': " + msg.text;
+        return false;
+    }
+    why = "cohesion model capillary: '" + spelling + "' is no law's keyword";
+    return false;
+}
+
 /* The model's keywords that make a law (as the user gave them). */
 struct LawWords {
     cb_model model;
-    std::string name, rupture, overlap, validity, richefeu_c;
-    bool c_given;
+    std::string name, rupture, overlap, validity;
+    std::vector<LawKeywordWord> keywords;  // every law's own (law_keyword_words)
 };
 
 class PairLaws {
@@ -37,6 +87,7 @@ class PairLaws {
     void build(LAMMPS_NS::Error *error, const LawWords &words, const double surface_tension,
                const double *contact_angle, const int ntypes)
     {
+        refuse_other_laws_keywords(error, words);
         ntypes_ = ntypes;
         std::vector<double> thetas;
         std::vector<int> index((ntypes + 1) * (ntypes + 1), 0);
@@ -50,7 +101,9 @@ class PairLaws {
             }
         char number[64];
         std::string key = words.name + "|" + words.rupture + "|" + words.overlap + "|" +
-                          words.validity + "|" + (words.c_given ? words.richefeu_c : "-");
+                          words.validity;
+        for (size_t w = 0; w < words.keywords.size(); ++w)
+            key += "|" + (words.keywords[w].given ? words.keywords[w].value : "-");
         snprintf(number, sizeof number, "|%.17g", surface_tension);
         key += number;
         for (size_t k = 0; k < thetas.size(); ++k) {
@@ -71,7 +124,11 @@ class PairLaws {
             configure(error, words, law, "rupture", words.rupture);
             configure(error, words, law, "overlap", words.overlap);
             configure(error, words, law, "validity", words.validity);
-            if (words.c_given) configure(error, words, law, "c", words.richefeu_c);
+            for (size_t w = 0; w < words.keywords.size(); ++w)
+                if (words.keywords[w].given)  // the law's own (refuse_other_laws_keywords)
+                    configure(error, words, law,
+                              cb_law_keyword_of(words.model, words.keywords[w].index)->name,
+                              words.keywords[w].value);
             if (cb_law_prepare(&law, &msg) != CB_OK) {
                 cb_law_release(&law);
                 fail(error, "cohesion model capillary: law " + words.name + ": " + msg.text);
@@ -98,6 +155,21 @@ class PairLaws {
     std::vector<int> pair_law;  // per pair of types, [a * (ntypes + 1) + b]: its law in laws
 
   private:
+    /* A law's own keyword given for another law, refused by the name the user gave (the
+     * core would read a keyword another law spells alike as that law's own). */
+    static void refuse_other_laws_keywords(LAMMPS_NS::Error *error, const LawWords &words)
+    {
+        for (size_t w = 0; w < words.keywords.size(); ++w) {
+            const LawKeywordWord &word = words.keywords[w];
+            if (!word.given || word.model == words.model) continue;
+            const cb_law_keyword *keyword = cb_law_keyword_of(word.model, word.index);
+            fail(error, "cohesion model capillary: keyword '" + word.spelling + "' (" +
+                            keyword->description + ", the keyword '" + keyword->name +
+                            "' of law " + cb_model_name(word.model) + ") applies to law " +
+                            cb_model_name(word.model) + " only, not to " + words.name);
+        }
+    }
+
     static void configure(LAMMPS_NS::Error *error, const LawWords &words, cb_law &law,
                           const char *keyword, const std::string &value)
     {

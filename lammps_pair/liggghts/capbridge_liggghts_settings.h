@@ -231,14 +231,6 @@ inline bool check_on_off(const std::string &k, const std::string &v, std::string
     static const char *const allowed[] = {"on", "off", NULL};
     return check_one_of(k, v, allowed, why);
 }
-inline bool check_number(const std::string &k, const std::string &v, std::string &why)
-{
-    double x = 0.0;
-    if (cb_parse_number(v.c_str(), &x)) return true;
-    why = "cohesion model capillary: " + k + " '" + v +
-          "' is not a decimal number within double range";
-    return false;
-}
 
 } /* namespace capbridge_liggghts */
 

@@ -123,7 +123,7 @@ namespace ContactModels {
       wall_(cmb->is_wall()),
       history_offset_(-1),
       law_given_(false),
-      c_given_(false),
+      law_keywords_(capbridge_liggghts::law_keyword_words()),
       tally_(false),
       per_atom_liquid_(false),
       model_(CB_MODEL_WILLETT),
@@ -165,7 +165,13 @@ namespace ContactModels {
       register_word(settings, "rupture", "default", &check_rupture, rupture_, NULL, input);
       register_word(settings, "overlap", "contact", &check_overlap, overlap_, NULL, input);
       register_word(settings, "validity", "extend", &check_validity, validity_, NULL, input);
-      register_word(settings, "richefeu_c", "0.9", &check_number, richefeu_c_, &c_given_, input);
+      // each law's own keywords, from the core's rows: law name + "_" + keyword (richefeu_c)
+      for (size_t k = 0; k < law_keywords_.size(); ++k) {
+        capbridge_liggghts::LawKeywordWord &word = law_keywords_[k];
+        const char *initial = cb_law_keyword_of(word.model, word.index)->default_text;
+        register_word(settings, word.spelling, initial, &check_law_keyword, word.value,
+                      &word.given, input);
+      }
       register_word(settings, "liquid", "fixed", &check_liquid, liquid_, NULL, input);
       // on/off as words: LIGGGHTS's own on/off reader reads past the end of the command
       // when the keyword is its last word (std::string from NULL: SIGABRT)
@@ -226,7 +232,7 @@ namespace ContactModels {
 
       check_properties();
       const capbridge_liggghts::LawWords words = {model_, law_name_, rupture_, overlap_,
-                                                  validity_, richefeu_c_, c_given_};
+                                                  validity_, law_keywords_};
       laws_.build(error, words, surface_tension_, contact_angle_, ntypes_);
       connect_per_atom();
       const capbridge_liggghts::ReachLaws laws = {&laws_.laws, &laws_.pair_law, ntypes_,
@@ -718,8 +724,10 @@ namespace ContactModels {
     // settings
     bool wall_;
     int history_offset_;
-    std::string law_name_, rupture_, overlap_, validity_, richefeu_c_, liquid_;
-    bool law_given_, c_given_;
+    std::string law_name_, rupture_, overlap_, validity_, liquid_;
+    bool law_given_;
+    // every law's own keywords (register_word binds to them: never resized)
+    std::vector<capbridge_liggghts::LawKeywordWord> law_keywords_;
     std::string tally_word_;  // on/off
     bool tally_;
     bool per_atom_liquid_;  // Protocols 1, 2, 3: the liquid in freeLiquid and the bridges

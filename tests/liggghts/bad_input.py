@@ -82,6 +82,12 @@ CASES = [
      ["rupture 'exact'", "allowed lian, willett, willett/unequal, default"]),
     ("richefeu_c for another law", ALL, "capillary law willett richefeu_c 0.8", "off",
      ["'c'", "richefeu only"]),
+    # a law's own keyword, registered from the core's rows as law + "_" + keyword: refused
+    # for another law by the name the user gave, and its value read by the core's row
+    ("a law keyword of another law, by its name", ALL, "capillary law table richefeu_c 0.8",
+     "off", ["keyword 'richefeu_c'", "applies to law richefeu only, not to table"]),
+    ("richefeu_c not > 0", ALL, "capillary law richefeu richefeu_c 0", "off",
+     ["keyword 'richefeu_c'", "c '0'", "> 0"]),
     ("contact angle of 95 degrees",
      "\n".join([GAMMA, "fix m7 all property/global contactAngle peratomtype 95", VOLUME]),
      "capillary law willett", "off", ["contactAngle", "95", "90"]),
