@@ -89,10 +89,21 @@ add_test(NAME liggghts_protocol1_reference
 add_test(NAME liggghts_protocols_restart
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/protocols_restart.py
                  ${CAPBRIDGE_LIGGGHTS_ENV} --workdir ${_liggghts_work}/protocols_restart)
+# Protocol 3's receiver of a broken bridge's liquid (the lowest contact on the lower
+# hemisphere, of equal heights the smaller partner ID; none: free liquid) against the core's
+# functions over the dumped spheres, computed without LIGGGHTS (protocol3_reference.c); 1 and
+# 2 ranks, the receiver a ghost of the giving sphere's rank
+add_executable(liggghts_protocol3_reference ${_liggghts_dir}/protocol3_reference.c)
+target_link_libraries(liggghts_protocol3_reference PRIVATE capbridge)
+target_compile_options(liggghts_protocol3_reference PRIVATE ${CAPBRIDGE_WARNINGS})
+add_test(NAME liggghts_protocol3_receiver
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/protocol3_receiver.py
+                 $<TARGET_FILE:liggghts_protocol3_reference> ${CAPBRIDGE_LIGGGHTS_ENV}
+                 --workdir ${_liggghts_work}/protocol3_receiver)
 set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts_bad_input
                      liggghts_friction liggghts_held liggghts_beyond_reach
                      liggghts_easo_comparison liggghts_between_runs
                      liggghts_restart liggghts_restart_mpi liggghts_liquid_account
                      liggghts_timestep liggghts_protocols liggghts_protocol1_reference
-                     liggghts_protocols_restart
+                     liggghts_protocols_restart liggghts_protocol3_receiver
                      PROPERTIES LABELS "liggghts" TIMEOUT 600)
