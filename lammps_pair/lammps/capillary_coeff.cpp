@@ -23,10 +23,18 @@
 using namespace LAMMPS_NS;
 
 namespace {
-const char *const coeff_syntax =
-    "syntax: pair_coeff I J kn kt damping mu law LAW [keyword value ...] or "
-    "pair_coeff I J contact none law LAW [keyword value ...]; keywords: gamma, theta, "
-    "rupture, overlap, validity, c, volume";
+// the syntax of pair_coeff; each law's own keywords as the core's rows list them
+std::string coeff_syntax()
+{
+  std::string syntax =
+      "syntax: pair_coeff I J kn kt damping mu law LAW [keyword value ...] or "
+      "pair_coeff I J contact none law LAW [keyword value ...]; keywords: gamma, theta, "
+      "rupture, overlap, validity";
+  for (int m = 0; m < CB_MODEL_COUNT; ++m)
+    for (int k = 0; k < cb_law_keyword_count((cb_model) m); ++k)
+      syntax += fmt::format(", {}", cb_law_keyword_of((cb_model) m, k)->name);
+  return syntax + ", volume";
+}
 }    // namespace
 
 /* ---------------------------------------------------------------------- */
@@ -93,7 +101,7 @@ void PairGranCapillary::settings(int narg, char **arg)
 
 void PairGranCapillary::coeff(int narg, char **arg)
 {
-  if (narg < 2) error->all(FLERR, "pair_coeff: missing type indices; {}", coeff_syntax);
+  if (narg < 2) error->all(FLERR, "pair_coeff: missing type indices; {}", coeff_syntax());
   if (!allocated) allocate();
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
@@ -145,13 +153,14 @@ int PairGranCapillary::parse_contact(const std::string &where, int narg, char **
 {
   auto number = [&](int k, const char *name, const char *meaning) -> double {
     if (k >= narg)
-      error->all(FLERR, "{}: missing coefficient {} ({}); {}", where, name, meaning, coeff_syntax);
+      error->all(FLERR, "{}: missing coefficient {} ({}); {}", where, name, meaning,
+                 coeff_syntax());
     if (!utils::is_double(arg[k])) {
       if (strcmp(arg[k], "law") == 0 || strcmp(arg[k], "contact") == 0)
         error->all(FLERR, "{}: missing coefficient {} ({}) before '{}'; {}", where, name,
-                   meaning, arg[k], coeff_syntax);
+                   meaning, arg[k], coeff_syntax());
       error->all(FLERR, "{}: coefficient {} ({}) must be a number, not '{}'; {}", where, name,
-                 meaning, arg[k], coeff_syntax);
+                 meaning, arg[k], coeff_syntax());
     }
     return utils::numeric(FLERR, arg[k], false, lmp);
   };
@@ -161,7 +170,7 @@ int PairGranCapillary::parse_contact(const std::string &where, int narg, char **
   if (narg > 0 && strcmp(arg[0], "contact") == 0) {
     if (narg < 2 || strcmp(arg[1], "none") != 0)
       error->all(FLERR, "{}: 'contact' must be followed by 'none' (no contact force: the "
-                 "capillary force only); {}", where, coeff_syntax);
+                 "capillary force only); {}", where, coeff_syntax());
     tp.contact_on = 0;
     return 2;
   }
@@ -189,7 +198,7 @@ void PairGranCapillary::parse_law(const std::string &where, int iarg, int narg, 
   if (iarg >= narg || strcmp(arg[iarg], "law") != 0)
     error->all(FLERR, "{}: missing 'law LAW' after the contact coefficients{} (laws: {}); {}",
                where, iarg < narg ? fmt::format(", found '{}'", arg[iarg]) : "",
-               cb_law_names(), coeff_syntax);
+               cb_law_names(), coeff_syntax());
   if (iarg + 1 >= narg)
     error->all(FLERR, "{}: 'law' needs a law name: allowed {}", where, cb_law_names());
   cb_model model;
