@@ -47,6 +47,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <string>
 #include <vector>
 
 namespace capbridge_liggghts {
@@ -77,13 +78,27 @@ class Protocol1 : protected LAMMPS_NS::Pointers {
     void set_every(const int every) { every_ = every; }
 
     /* eqs. 13-14 solve for one alpha over all pairs: one law (the model builds one per
-     * distinct contact angle of a pair of types) */
-    void check_laws(const size_t count)
+     * distinct contact angle of a pair of types, the mean of its two types') */
+    void check_laws(const std::vector<cb_law> &laws)
     {
-        if (count != 1)
-            error->all(FLERR, "cohesion model capillary: liquid protocol1 distributes the "
-                              "liquid with one law (Richefeu 2007 eqs. 13-14: one alpha over "
-                              "all pairs), so every atom type needs the same contactAngle");
+        if (laws.size() == 1) return;
+        std::string angles;
+        for (size_t k = 0; k < laws.size(); ++k) {
+            char degrees[32];
+            snprintf(degrees, sizeof degrees, "%s%g", k ? ", " : "",
+                     laws[k].contact_angle * 180.0 / M_PI);
+            angles += degrees;
+        }
+        char text[700];
+        snprintf(text, sizeof text,
+                 "cohesion model capillary: liquid protocol1 needs one contact angle for all "
+                 "pairs (Richefeu 2007 eqs. 13-14: one alpha over all pairs, with one law), "
+                 "but the atom types' contactAngle give their pairs %d contact angles (each "
+                 "the mean of its two types'): %s degrees; give every atom type the same "
+                 "contactAngle, or use liquid protocol2 or protocol3, which take a contact "
+                 "angle per pair",
+                 (int)laws.size(), angles.c_str());
+        error->all(FLERR, text);
     }
 
     /* In an updating pass: at the setup of this pair style's first run (also the first run

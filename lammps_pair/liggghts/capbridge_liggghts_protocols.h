@@ -96,7 +96,7 @@ class Protocols {
     /* At init (collective), after the laws are built: Protocol 1 needs one law. */
     void connect(const std::vector<cb_law> &laws)
     {
-        if (protocol1) first.check_laws(laws.size());
+        if (protocol1) first.check_laws(laws);
     }
 
     /* The design volume given with vmax; 0 when not given (the reach then takes the core's

@@ -2,7 +2,9 @@
 """Bad input for `cohesion capillary`: each case must stop LIGGGHTS with an ERROR line
 that names the problem; plus the dry wall: a fix wall/gran with `cohesion capillary`
 warns and adds no capillary force; and a bridge too small for LIGGGHTS's reach test, whose
-error must give a volume and a contact distance factor that work (both are run).
+error must give a volume and a contact distance factor that work (both are run); and
+Protocol 1 with two atom types: refused when their contact angles differ (one law, one
+alpha: Richefeu eqs. 13-14), run when they are equal.
 
 usage: bad_input.py LIGGGHTS_ENV [--workdir DIR]
 """
@@ -205,6 +207,69 @@ def tiny_volume(env, workdir):
     return ok
 
 
+# Two atom types, one sphere of each, touching; contact angles {angles}, Protocol 1
+TWO_TYPES_DECK = """units           si
+atom_style      granular
+atom_modify     map array
+boundary        f f f
+newton          off
+communicate     single vel yes
+region          box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box
+create_box      2 box
+neighbor        5e-4 bin
+neigh_modify    delay 0
+fix m1 all property/global kn peratomtypepair 2 1000 1000 1000 1000
+fix m2 all property/global kt peratomtypepair 2 1000 1000 1000 1000
+fix m3 all property/global gamman peratomtypepair 2 0 0 0 0
+fix m4 all property/global gammat peratomtypepair 2 0 0 0 0
+fix m5 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5
+{gamma}
+fix m7 all property/global contactAngle peratomtype {angles}
+{free}
+pair_style      gran model hooke/stiffness tangential history cohesion capillary &
+                law willett liquid protocol1 tally on
+pair_coeff      * *
+timestep        1e-6
+create_atoms    1 single 0 0 0 units box
+create_atoms    2 single 1.999e-3 0 0 units box
+set             atom * diameter 2e-3 density 2500
+compute         bridged all reduce sum f_bridgedLiquid
+thermo_style    custom step c_bridged
+thermo_modify   format float %.17g norm no
+run             0
+"""
+
+
+def protocol1_two_angles(env, workdir):
+    """Protocol 1 distributes with one law (one alpha over all pairs, Richefeu eqs. 13-14):
+    types of contact angles 10 and 20 degrees (pairs of 10, 15 and 20) are refused with the
+    angles named and what is allowed; types of 10 and 10 run (the bridge holds both
+    spheres' 2e-11 m^3)."""
+    ok = True
+    for angles, refused in (("10 20", True), ("10 10", False)):
+        name = "protocol1_angles_" + angles.replace(" ", "_")
+        deck = os.path.join(workdir, "in." + name)
+        with open(deck, "w") as f:
+            f.write(TWO_TYPES_DECK.format(gamma=GAMMA, angles=angles, free=FREE))
+        code, log = lc.liggghts(env, deck, [], workdir, log="log." + name)
+        line = lc.error_line(log)
+        if refused:
+            words = ["liquid protocol1 needs one contact angle", "10, 15, 20 degrees",
+                     "the same contactAngle", "liquid protocol2 or protocol3"]
+            good = code != 0 and line is not None and all(w in line for w in words)
+            detail = line or "no ERROR line"
+        else:
+            rows = lc.thermo_rows(log)
+            held = float(rows[0][1]) if code == 0 and len(rows) == 1 else float("nan")
+            good = abs(held - 2e-11) <= 1e-12 * 2e-11
+            detail = ("bridge of %.6g m^3 (expected 2e-11)" % held if code == 0
+                      else line or "exit %d" % code)
+        ok = ok and good
+        print("%-45s %s\n    %s" % ("Protocol 1, contact angles " + angles,
+                                    "ok" if good else "FAIL (exit %d)" % code, detail))
+    return ok
+
+
 def main():
     parser = lc.argument_parser(__doc__)
     args = parser.parse_args()
@@ -245,6 +310,7 @@ def main():
     print("%-45s %s\n    %s" % ("dry wall (warning, no capillary force)",
                                 "ok" if good else "FAIL", detail))
     ok = tiny_volume(env, workdir) and ok
+    ok = protocol1_two_angles(env, workdir) and ok
     print("bad input: %s (files in %s)" % ("PASS" if ok else "FAIL", workdir))
     return 0 if ok else 1
 
