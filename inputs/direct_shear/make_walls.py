@@ -4,6 +4,8 @@
 Usage: /usr/bin/python3 inputs/direct_shear/make_walls.py [OUTDIR]   (default: this directory)
 
 For each size (smoke, default, paper) three files, the geometry of in.lammps / in.liggghts:
+The cell: the paper's heights at every size, sample height H = 25 mm at solid fraction 0.6,
+split at Hlow = 15 mm (15 mm lower + 10 mm upper part), the radius R from the number of grains.
   lower_SIZE.stl  the fixed lower ring: cylinder r = R from z = 0 to Hlow, the floor (a square
                   at z = 0) and the top rim (a square flange with a circular hole of radius R at
                   z = Hlow, which holds the grains of the upper ring that pass beyond r = R)
@@ -19,25 +21,25 @@ import math
 import os
 import sys
 
-# the size table of the decks (in.lammps, in.liggghts): grains, cell radius, shear in <D>
-SIZES = {"smoke": (600, 10e-3, 1.5), "default": (2400, 16e-3, 3.0), "paper": (7307, 23e-3, 4.0)}
+# the size table of the decks (in.lammps, in.liggghts): grains, shear in <D>
+SIZES = {"smoke": (600, 1.5), "default": (2400, 3.0), "paper": (7307, 4.0)}
+HEIGHT = 25e-3                                  # sample height at solid fraction 0.6
+H_LOW = 0.6 * HEIGHT                            # the split: 15 mm lower + 10 mm upper part
 D_MEAN = 0.5 * 2e-3 + 0.3 * 1.5e-3 + 0.2 * 1e-3  # <D> by number
 PLATE_SPHERE = 1.5e-3                           # the margin (the LAMMPS plate sphere diameter)
 SEGMENTS = 64                                   # facets around the cylinder (a multiple of 8)
 
 
-def geometry(n, radius, n_d):
-    """Hlow, Htop, half-width of rims and plate; the same formulas as the decks."""
+def geometry(n, n_d):
+    """R, Hlow, Htop, half-width of rims and plate; the same formulas as the decks."""
     n1 = round(0.5 * n)
     n2 = round(0.3 * n)
     n3 = n - n1 - n2
     v_grains = math.pi / 6 * (n1 * 8 + n2 * 3.375 + n3 * 1) * 1e-9
-    area = math.pi * radius ** 2
-    height = v_grains / (0.6 * area)              # sample height at solid fraction 0.6
-    h_low = 0.75 * height
-    h_top = 1.3 * height + 2e-3                   # the upper ring's top, above the deposit
+    radius = math.sqrt(v_grains / (0.6 * math.pi * HEIGHT))
+    h_top = 1.3 * HEIGHT + 2e-3                   # the upper ring's top, above the deposit
     half = radius + n_d * D_MEAN + 2 * PLATE_SPHERE
-    return h_low, h_top, half
+    return radius, H_LOW, h_top, half
 
 
 def circle(radius, z):
@@ -95,8 +97,8 @@ def write_stl(path, name, tris):
 
 def main():
     outdir = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))
-    for size, (n, radius, n_d) in SIZES.items():
-        h_low, h_top, half = geometry(n, radius, n_d)
+    for size, (n, n_d) in SIZES.items():
+        radius, h_low, h_top, half = geometry(n, n_d)
         write_stl(os.path.join(outdir, f"lower_{size}.stl"), f"lower_{size}",
                   cylinder(radius, 0.0, h_low) + square(half, 0.0) + flange(radius, half, h_low))
         write_stl(os.path.join(outdir, f"upper_{size}.stl"), f"upper_{size}",

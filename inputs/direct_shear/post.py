@@ -7,10 +7,15 @@ Every RUN_DIR (or any directory below it) holding a shear.txt written by in.lamm
 is one run; its first line gives the parameters (engine, size, sigma, w, protocol, bonds, law).
 Writes into DIR:
   runs.csv          one line per run: the shear strength (the plateau mean of tau, see below),
-                    the peak of tau, the normal stress on the shear plane, bonds, liquid check
+                    the peak of tau, the normal stress on the shear plane, bonds, liquid check,
+                    the seed; where the deck writes the wall forces (in.lammps since 2026-12-03),
+                    the plateau mean of each wall part's x force over pi R^2 (see WALL_PARTS)
   mohr_coulomb.csv  per engine, protocol, bonds and w with at least two stresses: the fit
-                    tau = sigma_n tan(phi) + c (least squares), and c_dry_phi, the cohesion with
-                    the friction of the dry fit (the paper's Coulomb lines are parallel)
+                    tau = sigma_n tan(phi) + c (least squares over every run: all sigmas and
+                    seeds), the standard errors of tan(phi) and c from the residuals (with four
+                    runs or more) and from the seeds (the same fit per seed, the standard error
+                    of the mean over the seeds, with two seeds or more), and c_dry_phi, the
+                    cohesion with the friction of the dry fit (the paper's lines are parallel)
   curves_*.png      tau against dx/<D> (Fig. 5), one file per engine and protocol
   yield_loci.png    tau against sigma_n with the fitted lines (Fig. 6a)
   cohesion.png      c against w (Fig. 6b), with the paper's saturation c_m = 120 Pa (simulation)
@@ -31,6 +36,15 @@ import numpy as np
 
 COLUMNS = ["step", "dx_m", "dx_over_D", "tau_Pa", "sigma_plate_Pa", "sigma_n_Pa", "phi",
            "bridges", "z_bond", "liquid_m3", "liquid_rel_change", "ke_J"]
+# the x force of each wall part on the grains above / below the split, and the plate's (the
+# plate takes it from the grains; it acts on them with the opposite sign), in shear.txt of
+# in.lammps: tau = (ring_above + ring_below - plate) / (pi R^2).  The force across the split
+# is the x balance of the grains above it: tau_plane = (ring_above + lowring_above - plate) /
+# (pi R^2) (without the rings' edges pushing the grains on the other side of the split), on
+# the normal stress sigma_n - fz_rims_above / (pi R^2) (the lower ring's rim carries part of
+# the grains above the split)
+WALL_PARTS = ["fx_ring_above_N", "fx_ring_below_N", "fx_lowring_above_N", "fx_lowring_below_N",
+              "fx_plate_N", "fz_rims_above_N"]
 PAPER_CM_SIM = 120.0   # Pa, Richefeu 2007 section 3.2.2 (simulations, saturation)
 PAPER_CM_EXP = 150.0   # Pa, Richefeu 2007 Table I / Fig. 4 (experiment, 1 mm glass beads)
 
@@ -51,18 +65,22 @@ def read_run(path):
             fail(f"{path}: no '{key}' in the parameter line")
     if float(params["w"]) == 0:
         params["protocol"] = "dry"   # no liquid: the protocol does not matter
+    # the column names: the title line '# step ...' (runs before 2026-12-03 have COLUMNS only)
+    names = next((line[1:].split() for line in lines if line.startswith("# step ")), COLUMNS)
+    if names[:len(COLUMNS)] != COLUMNS:
+        fail(f"{path}: the columns should start with {' '.join(COLUMNS)}, not {' '.join(names)}")
     rows = [line.split() for line in lines if line.strip() and not line.startswith("#")]
     if len(rows) < 3:
         fail(f"{path}: fewer than 3 output lines (did the run finish?)")
     for k, row in enumerate(rows):
-        if len(row) != len(COLUMNS):
-            fail(f"{path}: output line {k + 1} has {len(row)} values, expected {len(COLUMNS)} "
+        if len(row) != len(names):
+            fail(f"{path}: output line {k + 1} has {len(row)} values, expected {len(names)} "
                  "(a truncated or damaged file)")
     try:
         data = np.array([[float(v) for v in row] for row in rows])
     except ValueError as e:
         fail(f"{path}: {e}")
-    d = {name: data[:, i] for i, name in enumerate(COLUMNS)}
+    d = {name: data[:, i] for i, name in enumerate(names)}
     # a run that stopped early would give the plateau of a part of the shear (nD: the planned
     # shear, in the parameter line since 2026-12-02)
     if "nD" in params and d["dx_over_D"][-1] < 0.95 * float(params["nD"]):
@@ -71,15 +89,23 @@ def read_run(path):
     return params, d
 
 
-def strength(d):
-    """Plateau mean and standard deviation of tau, peak of tau, mean sigma_n on the plateau."""
+def strength(d, area):
+    """Plateau mean and standard deviation of tau, peak of tau, mean sigma_n on the plateau;
+    the plateau mean of each wall part's x force over the section `area` (when written)."""
     x = d["dx_over_D"]
     start = min(1.0, x[-1] / 2)
     on = x >= start
-    return dict(plateau_from=start, tau=float(d["tau_Pa"][on].mean()),
-                tau_std=float(d["tau_Pa"][on].std()), tau_peak=float(d["tau_Pa"].max()),
-                sigma_n=float(d["sigma_n_Pa"][on].mean()),
-                sigma_plate=float(d["sigma_plate_Pa"][on].mean()))
+    s = dict(plateau_from=start, tau=float(d["tau_Pa"][on].mean()),
+             tau_std=float(d["tau_Pa"][on].std()), tau_peak=float(d["tau_Pa"].max()),
+             sigma_n=float(d["sigma_n_Pa"][on].mean()),
+             sigma_plate=float(d["sigma_plate_Pa"][on].mean()))
+    for name in WALL_PARTS:
+        s["tau_" + name[:-2] + "_Pa"] = (float(d[name][on].mean()) / area if name in d
+                                          else float("nan"))
+    s["tau_plane_Pa"] = (s["tau_fx_ring_above_Pa"] + s["tau_fx_lowring_above_Pa"]
+                         - s["tau_fx_plate_Pa"])
+    s["sigma_n_plane_Pa"] = s["sigma_n"] - s["tau_fz_rims_above_Pa"]
+    return s
 
 
 def find_runs(roots):
@@ -104,23 +130,50 @@ def key_of(p):
 def write_runs(runs, out):
     rows = []
     for path, p, d in runs:
-        s = strength(d)
+        s = strength(d, math.pi * float(p["R"]) ** 2)
         rows.append(dict(engine=p["engine"], size=p["size"], protocol=p["protocol"], bonds=p["bonds"],
-                         law=p["law"], sigma_Pa=float(p["sigma"]), w_percent=float(p["w"]),
+                         law=p["law"], seed=p.get("seed", "deck"), sigma_Pa=float(p["sigma"]),
+                         w_percent=float(p["w"]),
                          sigma_n_Pa=s["sigma_n"], sigma_plate_Pa=s["sigma_plate"],
                          tau_plateau_Pa=s["tau"], tau_plateau_std_Pa=s["tau_std"],
                          tau_peak_Pa=s["tau_peak"], plateau_from_D=s["plateau_from"],
                          dx_end_D=float(d["dx_over_D"][-1]), phi_end=float(d["phi"][-1]),
                          z_bond_start=float(d["z_bond"][0]), z_bond_end=float(d["z_bond"][-1]),
                          liquid_max_abs_rel_change=float(np.abs(d["liquid_rel_change"]).max()),
+                         **{k: v for k, v in s.items() if k.startswith(("tau_f", "tau_plane"))},
+                         sigma_n_plane_Pa=s["sigma_n_plane_Pa"],
                          run=os.path.basename(os.path.dirname(path))))
-    rows.sort(key=lambda r: (r["engine"], r["protocol"], r["bonds"], r["w_percent"], r["sigma_Pa"]))
+    rows.sort(key=lambda r: (r["engine"], r["protocol"], r["bonds"], r["w_percent"], r["sigma_Pa"],
+                             r["seed"]))
     with open(os.path.join(out, "runs.csv"), "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0]))
         writer.writeheader()
         for r in rows:
             writer.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in r.items()})
     return rows
+
+
+def line_fit(rs, tau="tau_plateau_Pa", sigma="sigma_n_Pa"):
+    """tau = tan(phi) sigma_n + c over the runs `rs` by least squares: slope, intercept and
+    their standard errors from the residuals (nan with fewer than 4 runs; nan for all with
+    fewer than 2 stresses or without the columns)."""
+    s = np.array([r[sigma] for r in rs])
+    t = np.array([r[tau] for r in rs])
+    if len({r["sigma_Pa"] for r in rs}) < 2 or not np.isfinite(t).all():
+        return (float("nan"),) * 4
+    if len(rs) < 4:  # numpy's covariance needs more points than parameters + 1
+        slope, c = np.polyfit(s, t, 1)
+        return float(slope), float(c), float("nan"), float("nan")
+    (slope, c), cov = np.polyfit(s, t, 1, cov="unscaled")
+    resid = t - (slope * s + c)
+    scale = float(resid @ resid) / (len(rs) - 2)
+    return float(slope), float(c), math.sqrt(scale * cov[0, 0]), math.sqrt(scale * cov[1, 1])
+
+
+def sem(values):
+    """Standard error of the mean (nan for fewer than two values)."""
+    v = np.array(values, dtype=float)
+    return float(v.std(ddof=1) / math.sqrt(len(v))) if len(v) > 1 else float("nan")
 
 
 def fit_mohr_coulomb(rows, out):
@@ -131,12 +184,19 @@ def fit_mohr_coulomb(rows, out):
     for (engine, protocol, bonds, w), rs in sorted(groups.items()):
         if len({r["sigma_Pa"] for r in rs}) < 2:
             continue
-        s = np.array([r["sigma_n_Pa"] for r in rs])
-        t = np.array([r["tau_plateau_Pa"] for r in rs])
-        slope, c = np.polyfit(s, t, 1)
+        slope, c, slope_se, c_se = line_fit(rs)
+        per_seed = [line_fit([r for r in rs if r["seed"] == seed])
+                    for seed in sorted({r["seed"] for r in rs})]
+        per_seed = [f for f in per_seed if not math.isnan(f[0])]
+        plane = line_fit(rs, "tau_plane_Pa", "sigma_n_plane_Pa")
         fits.append(dict(engine=engine, protocol=protocol, bonds=bonds, w_percent=w,
-                         n_stresses=len(rs), tan_phi=slope, phi_deg=math.degrees(math.atan(slope)),
-                         c_Pa=c))
+                         n_stresses=len({r["sigma_Pa"] for r in rs}), n_runs=len(rs),
+                         n_seeds=len(per_seed), tan_phi=slope, tan_phi_se=slope_se,
+                         tan_phi_se_seeds=sem([f[0] for f in per_seed]),
+                         phi_deg=math.degrees(math.atan(slope)), c_Pa=c, c_se_Pa=c_se,
+                         c_se_seeds_Pa=sem([f[1] for f in per_seed]),
+                         tan_phi_plane=plane[0], tan_phi_plane_se=plane[2],
+                         c_plane_Pa=plane[1], c_plane_se_Pa=plane[3]))
     # the paper finds the Coulomb lines of all w parallel (section 3.1.3): c with the dry friction
     # of the same engine, the mean of tau - tan(phi_dry) sigma_n (robust with few, noisy points)
     for f in fits:
@@ -145,8 +205,10 @@ def fit_mohr_coulomb(rows, out):
         f["c_dry_phi_Pa"] = (float(np.mean([r["tau_plateau_Pa"] - dry[0]["tan_phi"] * r["sigma_n_Pa"]
                                             for r in rs])) if dry else float("nan"))
     with open(os.path.join(out, "mohr_coulomb.csv"), "w", newline="") as f:
-        names = ["engine", "protocol", "bonds", "w_percent", "n_stresses", "tan_phi", "phi_deg", "c_Pa",
-                 "c_dry_phi_Pa"]
+        names = ["engine", "protocol", "bonds", "w_percent", "n_stresses", "n_runs", "n_seeds",
+                 "tan_phi", "tan_phi_se", "tan_phi_se_seeds", "phi_deg", "c_Pa", "c_se_Pa",
+                 "c_se_seeds_Pa", "tan_phi_plane", "tan_phi_plane_se", "c_plane_Pa",
+                 "c_plane_se_Pa", "c_dry_phi_Pa"]
         writer = csv.DictWriter(f, fieldnames=names)
         writer.writeheader()
         for r in fits:
@@ -267,9 +329,13 @@ def main():
               f"(peak {r['tau_peak_Pa']:6.1f}) sigma_n {r['sigma_n_Pa']:6.1f} Pa z_bond "
               f"{r['z_bond_start']:.2f} -> {r['z_bond_end']:.2f}")
     for f in fits:
-        print(f"fit {f['engine']} {f['protocol']} {f['bonds']} w {f['w_percent']:g} %: "
-              f"tan(phi) {f['tan_phi']:.3f} (phi {f['phi_deg']:.1f} deg), c {f['c_Pa']:.1f} Pa; "
-              f"with the dry friction: c {f['c_dry_phi_Pa']:.1f} Pa")
+        print(f"fit {f['engine']} {f['protocol']} {f['bonds']} w {f['w_percent']:g} % "
+              f"({f['n_runs']} runs, {f['n_seeds']} seeds): tan(phi) {f['tan_phi']:.3f} "
+              f"+- {f['tan_phi_se']:.3f} (seeds {f['tan_phi_se_seeds']:.3f}; phi "
+              f"{f['phi_deg']:.1f} deg), c {f['c_Pa']:.1f} +- {f['c_se_Pa']:.1f} Pa (seeds "
+              f"{f['c_se_seeds_Pa']:.1f}); with the dry friction: c {f['c_dry_phi_Pa']:.1f} Pa; "
+              f"across the split: tan(phi) {f['tan_phi_plane']:.3f} +- {f['tan_phi_plane_se']:.3f}, "
+              f"c {f['c_plane_Pa']:.1f} +- {f['c_plane_se_Pa']:.1f} Pa")
 
 
 if __name__ == "__main__":

@@ -5,12 +5,15 @@
 #
 # Usage: inputs/direct_shear/study.sh [-size smoke|default|paper] [-np N] [-engines "lammps liggghts"]
 #                                     [-sigmas "200 500 800"] [-ws "0 0.1 0.5 1 2"] [-protocols "1 2"]
-#                                     [-nohalf] [-nocopy]
+#                                     [-seeds "0 1 2"] [-nohalf] [-nocopy]
 #   the full matrix at default size (the command the results page refers to):
 #     CAPBRIDGE_SKIP_CONFIGURE=1 inputs/direct_shear/study.sh -size default
 #   LAMMPS: Protocols 1 and 2 for every wet w (-protocols: a subset); LIGGGHTS: protocol2 (it has no Protocol 1);
 #   dry runs once per engine and sigma; the half-bonds variant (Fig. 7): LAMMPS, Protocol 2,
 #   w = 1 %, the middle sigma, next to its all-bonds run.
+#   -seeds: every run once per packing (default "0"); seed 0 is the deck's own seed and the run
+#   name above, seed k adds -seedk to it and gives the deck seed 5871 + k (LAMMPS) or the k-th
+#   prime after its 15485863 (LIGGGHTS takes primes), k = 0..5.
 # Outputs: out/direct_shear/study-SIZE/<engine>-p<protocol>-<bonds>-s<sigma>-w<w>/ (one run each),
 #   out/direct_shear/study-SIZE/post/ (post.py), copied as above (-nocopy: not).
 # Environment: CAPBRIDGE_LOCK=FILE runs every engine under `flock FILE` (one heavy run at a time on a
@@ -19,10 +22,12 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
 size=default np=2 engines="lammps liggghts" sigmas="200 500 800" ws="0 0.1 0.5 1 2" lammps_protocols="1 2" half=1 copy=1
-usage() { sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
+seeds=0
+liggghts_primes=(15485863 15485867 15485917 15485927 15485933 15485941)
+usage() { sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 while [ $# -gt 0 ]; do
   case $1 in
-    -size|-np|-engines|-sigmas|-ws|-protocols)
+    -size|-np|-engines|-sigmas|-ws|-protocols|-seeds)
       [ $# -ge 2 ] || { echo "study.sh: $1 needs a value" >&2; usage; } ;;
   esac
   case $1 in
@@ -32,6 +37,7 @@ while [ $# -gt 0 ]; do
     -sigmas) sigmas=$2; shift 2 ;;
     -ws) ws=$2; shift 2 ;;
     -protocols) lammps_protocols=$2; shift 2 ;;
+    -seeds) seeds=$2; shift 2 ;;
     -nohalf) half=0; shift ;;
     -nocopy) copy=0; shift ;;
     -h|--help) usage ;;
@@ -47,6 +53,9 @@ done
 for p in $lammps_protocols; do
   case $p in 1|2) ;; *) echo "study.sh: -protocols takes 1, 2, not '$p'" >&2; exit 2 ;; esac
 done
+for k in $seeds; do
+  case $k in [0-5]) ;; *) echo "study.sh: -seeds takes packings 0..5, not '$k'" >&2; exit 2 ;; esac
+done
 # the smoke-size results live in docs/results/direct_shear/, the others in a directory of
 # their size: a default-size study never overwrites the smoke files
 dest="$top/docs/results/direct_shear"
@@ -56,7 +65,21 @@ mkdir -p "$study"
 # ranks waiting in MPI give the core to the other rank (the machine may be shared)
 export OMPI_MCA_mpi_yield_when_idle=${OMPI_MCA_mpi_yield_when_idle:-1}
 
-one() {  # one ENGINE NAME -var ...: one run unless its shear.txt is complete
+one() {  # one ENGINE NAME -var ...: one run per seed unless its shear.txt is complete
+  local engine=$1 name=$2 k
+  shift 2
+  for k in $seeds; do
+    if [ "$k" = 0 ]; then
+      one_seed "$engine" "$name" "$@"
+    elif [ "$engine" = lammps ]; then
+      one_seed "$engine" "$name-seed$k" "$@" -var seed $((5871 + k))
+    else
+      one_seed "$engine" "$name-seed$k" "$@" -var seed "${liggghts_primes[$k]}"
+    fi
+  done
+}
+
+one_seed() {  # one_seed ENGINE NAME -var ...: one run unless its shear.txt is complete
   local engine=$1 name=$2
   shift 2
   local out="$study/$name"

@@ -2,8 +2,9 @@
 # included by tests/CMakeLists.txt when both engine env files are set.  Each test runs the
 # smoke decks on 2 ranks through scripts/scene.sh and asserts physics (direct_shear_smoke.py):
 # wet stronger than dry, the servo's vertical stress, liquid conserved to 1e-12, the bonds.
-# Measured: LAMMPS (4 runs) 135 s, LIGGGHTS (2 runs) 79 s on 2 moderately loaded cores;
-# 305 s and 126 s when other jobs loaded the 2 cores 4-5 times over.
+# Measured: LAMMPS (4 runs) 50 s, LIGGGHTS (2 runs) 81 s on 2 moderately loaded cores
+# (2026-12-03, the cell of the paper's heights); 305 s and 126 s with the earlier cell when
+# other jobs loaded the 2 cores 4-5 times over.
 find_package(Python3 REQUIRED COMPONENTS Interpreter)
 set(_ds_env CAPBRIDGE_SKIP_CONFIGURE=1
             CAPBRIDGE_PLUGIN=$<TARGET_FILE:capbridgeplugin>
