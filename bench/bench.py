@@ -434,25 +434,28 @@ def assemble():
     return summaries
 
 
-def compare(ctx, a, b, side):
+def compare(ctx, a, b, side, options_a=""):
     """Two builds of the LAMMPS plugin against each other on one side of part 1's scene, by
     part 1's method (engines.beside, the launch order alternating); a may be "stock",
     LAMMPS's own dry style.  Prints B's CPU time over A's per repeat, then B's instructions
     over A's (callgrind, as part 1 counts them): a developer's tool for a change to the hot
     path.  Run A against A first: its spread bounds what a comparison
-    can resolve."""
+    can resolve.  options_a: words added to A's pair_style (an older build whose defaults
+    differ, e.g. "friction dry" for one before the eq. 12 limit), so that both run the same
+    physics."""
     data = base_packing(ctx)
     copies = part1_copies(ctx)
     deck = os.path.join(HERE, "in.cycle.lammps")
     work = os.path.join(OUT, "compare")
     builds = {"A": a, "B": b}
+    options = {"A": options_a, "B": ""}
     for r in range(ctx.repeats):
         order = ["A", "B"] if r % 2 == 0 else ["B", "A"]
         runs = []
         for label in order:
             build = builds[label]
             variables = ({"side": "stock"} if build == "stock"
-                         else {"side": side, "plugin": build})
+                         else {"side": side, "plugin": build, "options": options[label]})
             runs.append((label, f"{label}.log", dict(variables, data=data, nx=copies[0],
                                                       ny=copies[1], nz=copies[2], steps=2000)))
         loops = engines.beside(ctx.lammps, deck, work, runs)
@@ -462,7 +465,8 @@ def compare(ctx, a, b, side):
     # the instruction counts of part 1's method (callgrind, the base packing): the same on a
     # busy machine, where the CPU times above carry a few per cent from repeat to repeat
     sides = {label: ({"side": "stock"} if build == "stock"
-                     else {"side": side, "plugin": build}) for label, build in builds.items()}
+                     else {"side": side, "plugin": build, "options": options[label]})
+             for label, build in builds.items()}
     counts, steps = instructions(ctx, sides, data, work)
     (ta, pa), (tb, pb) = counts["A"], counts["B"]
     print(f"instructions ({steps} steps of the base packing): B/A {tb / ta:.4f} in all, "
@@ -478,9 +482,14 @@ def main():
                         help="instead of the parts: two plugin builds (A may be 'stock') on "
                         "one side of part 1's scene")
     parser.add_argument("--side", help="the side --compare runs: wet (default) or off")
+    parser.add_argument("--options-a", default="", metavar="WORDS",
+                        help="with --compare: words added to A's pair_style, e.g. 'friction "
+                        "dry' for a build before the eq. 12 limit (whose default differs)")
     args = parser.parse_args()
     if args.side is not None and not args.compare:
         engines.fail("--side goes with --compare (the parts run every side)")
+    if args.options_a and not args.compare:
+        engines.fail("--options-a goes with --compare")
     args.side = args.side or "wet"
     if args.side not in ("wet", "off"):
         engines.fail(f"--side must be wet or off, not '{args.side}'")
@@ -517,7 +526,7 @@ def main():
         a, b = (build if build == "stock" else os.path.realpath(build)
                 for build in args.compare)
         ctx.repeats = args.repeats or 4
-        compare(ctx, a, b, args.side)
+        compare(ctx, a, b, args.side, args.options_a)
         return
     results = os.path.join(OUT, "quick") if ctx.quick else RESULTS
     os.makedirs(results, exist_ok=True)
