@@ -117,6 +117,7 @@ class PairGranCapillary : public Pair, public CapillaryBridges {
   __attribute__((noinline)) double advance_bridge(int i, int j, double rsq, double gap,
                                                   const TypePair &tp, cb_bridge *bridge);
   void derive_bridges();
+  [[noreturn]] void corrupt_bridge(int i, int j, const cb_bridge *bridge);
   // BRIDGES false: a run without bridges (bridges_possible 0)
   template <bool BRIDGES> void form_bridges_and_forces();
   // the pair loop's steps, inline in it (as one function they were: its registers, its
