@@ -35,11 +35,17 @@ static const cb_bridge dry_bridge = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
  * law constant >= 0 (0: the force is evaluated in full, always correct)}.
  * Anything else (e.g. a corrupted pair history) is an error, never silently repaired:
  * repairing it would create or lose liquid. */
-static cb_status check_state(const cb_bridge *b)
+cb_status cb_bridge_check_state(const cb_bridge *b)
 {
+    if (!b) return CB_ERR_NULL;
     int valid;
     if (b->active == 1.0)
-        valid = cb_bridge_active_state(b);
+        valid = b->volume > 0.0 && b->volume <= DBL_MAX && b->rupture > 0.0 &&
+                b->rupture <= DBL_MAX && b->force_contact >= 0.0 &&
+                b->force_contact <= DBL_MAX && b->radius_sum > 0.0 &&
+                b->radius_sum <= DBL_MAX && b->radius_product > 0.0 &&
+                b->radius_product <= DBL_MAX && b->law_constant >= 0.0 &&
+                b->law_constant <= DBL_MAX;
     else
         valid = b->active == 0.0 && b->volume == 0.0 && b->rupture == 0.0 &&
                 b->force_contact == 0.0 && b->radius_sum == 0.0 && b->radius_product == 0.0 &&
@@ -139,7 +145,7 @@ cb_status cb_bridge_update(const cb_law *law, double r1, double r2, double gap,
 {
     if (!law || !bridge || !transition || !released_volume) return CB_ERR_NULL;
     cb_status status = check_inputs(law, r1, r2, gap, available_volume);
-    if (status == CB_OK) status = check_state(bridge);
+    if (status == CB_OK) status = cb_bridge_check_state(bridge);
     if (status != CB_OK) return status;
     cb_bridge next;
     cb_transition change;
@@ -158,7 +164,7 @@ cb_status cb_bridge_step(const cb_law *law, double r1, double r2, double gap,
 {
     if (!law || !bridge || !transition || !released_volume || !force) return CB_ERR_NULL;
     cb_status status = check_inputs(law, r1, r2, gap, available_volume);
-    if (status == CB_OK) status = check_state(bridge);
+    if (status == CB_OK) status = cb_bridge_check_state(bridge);
     if (status != CB_OK) return status;
     cb_bridge next;
     cb_transition change;
@@ -178,7 +184,7 @@ cb_status cb_bridge_force(const cb_law *law, double r1, double r2, double gap,
 {
     if (!law || !bridge || !force) return CB_ERR_NULL;
     cb_status status = check_inputs(law, r1, r2, gap, 0.0);
-    if (status == CB_OK) status = check_state(bridge);
+    if (status == CB_OK) status = cb_bridge_check_state(bridge);
     if (status != CB_OK) return status;
     cb_bridge current = *bridge;
     if (current.active == 1.0 && !derived_for(&current, r1, r2))
@@ -192,7 +198,7 @@ cb_status cb_bridge_set_volume(const cb_law *law, double r1, double r2, double v
 {
     if (!law || !bridge) return CB_ERR_NULL;
     cb_status status = check_inputs(law, r1, r2, 0.0, volume);
-    if (status == CB_OK) status = check_state(bridge);
+    if (status == CB_OK) status = cb_bridge_check_state(bridge);
     if (status != CB_OK) return status;
     cb_bridge next = dry_bridge;
     if (volume > 0.0) status = derive(law, r1, r2, volume, &next);

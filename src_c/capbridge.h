@@ -446,6 +446,14 @@ cb_status cb_bridge_step(const cb_law *law, double r1, double r2, double gap,
 cb_status cb_bridge_force(const cb_law *law, double r1, double r2, double gap,
                           const cb_bridge *bridge, double *force);
 
+/* CB_OK when a stored state is one of the two shapes the calls above and below produce:
+ * dry (all zero) or an active bridge's (volume > 0, active 1, rupture > 0, contact force
+ * >= 0, radii > 0, law constant >= 0, every one finite); else CB_ERR_BRIDGE_STATE (a
+ * corrupted pair history or restart file).  Every call above checks the state it is given
+ * with it; an engine checks each stored state once where it enters (a restart file's pair
+ * history at the first force pass of a run) before it uses cb_bridge_held. */
+cb_status cb_bridge_check_state(const cb_bridge *bridge);
+
 /* For an engine's pair loop, inline: a bridge that is held at this gap with no change of
  * state and whose force comes from its stored constants — what cb_bridge_step would do,
  * bit for bit, without the call (its validation and copies):
@@ -455,26 +463,17 @@ cb_status cb_bridge_force(const cb_law *law, double r1, double r2, double gap,
  *   - stretched (0 < gap <= rupture distance), richefeu with its stored 1/lambda and a
  *     validity that is not strict: force_contact exp(-gap/lambda) (eq. 10).
  * Returns 1 and sets *force then; returns 0, touching nothing, where cb_bridge_step must
- * be called: no bridge, a bridge to rupture, a gap that is NaN, other radii, another law's
- * stretched bridge, or a stored state that is not an active bridge's (cb_bridge_step
- * reports it).  Uses exp(): the engine links libm. */
-/* 1 when a stored state is a valid active bridge's: volume > 0, active 1, rupture > 0,
- * contact force >= 0, radii > 0, law constant >= 0, every one finite.  The one definition of
- * that shape: cb_bridge_step validates with it, cb_bridge_held below accepts only it. */
-static inline int cb_bridge_active_state(const cb_bridge *b)
-{
-    return b->active == 1.0 && b->volume > 0.0 && b->volume <= DBL_MAX && b->rupture > 0.0 &&
-           b->rupture <= DBL_MAX && b->force_contact >= 0.0 && b->force_contact <= DBL_MAX &&
-           b->radius_sum > 0.0 && b->radius_sum <= DBL_MAX && b->radius_product > 0.0 &&
-           b->radius_product <= DBL_MAX && b->law_constant >= 0.0 && b->law_constant <= DBL_MAX;
-}
-
+ * be called: no bridge, a bridge to rupture, a gap that is NaN or infinite, other radii,
+ * another law's stretched bridge.  The state must be one cb_bridge_check_state accepts and
+ * the law prepared: the caller checked the state once where it entered (every call here
+ * keeps a valid state valid), so that the held path reads only the fields it uses.  Uses
+ * exp(): the engine links libm. */
 static inline int cb_bridge_held(const cb_law *law, double r1, double r2, double gap,
                                  const cb_bridge *bridge, double *force)
 {
-    /* the radii match stored ones > 0 (so both are > 0 and finite); the gap is finite */
-    if (!(law->prepared && gap >= -DBL_MAX && cb_bridge_active_state(bridge) &&
-          bridge->radius_sum == r1 + r2 && bridge->radius_product == r1 * r2))
+    /* the constants are for these radii; the gap is finite (NaN fails both tests below) */
+    if (!(bridge->active == 1.0 && bridge->radius_sum == r1 + r2 &&
+          bridge->radius_product == r1 * r2 && gap >= -DBL_MAX))
         return 0;
     if (gap <= 0.0) {
         /* Richefeu eq. 10 keeps the contact value in overlap; Gladkyy eq. 4 applies none */

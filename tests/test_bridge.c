@@ -240,6 +240,15 @@ static void expect_error(const cb_law *law, double r1, double r2, double gap, do
     CHECK(t == (cb_transition)77 && released == 12345.0 && force == 678.0);
 }
 
+/* A stored state that is neither dry nor a valid bridge's: refused by the check an engine
+ * makes once where a state enters (cb_bridge_check_state) and by every call. */
+static void expect_corrupt(const cb_law *law, double r1, double r2, double gap,
+                           double available, cb_bridge state)
+{
+    CHECK_STATUS(cb_bridge_check_state(&state), CB_ERR_BRIDGE_STATE);
+    expect_error(law, r1, r2, gap, available, state, CB_ERR_BRIDGE_STATE);
+}
+
 static void errors(const cb_law *law)
 {
     const double v = 1e-12, r = 5e-4;
@@ -272,7 +281,7 @@ static void errors(const cb_law *law)
         for (int k = 0; k < CB_BRIDGE_DOUBLES; ++k) {
             cb_bridge corrupt = wet;
             ((double *)&corrupt)[k] = bad[i];
-            expect_error(law, r, r, 1e-6, v, corrupt, CB_ERR_BRIDGE_STATE);
+            expect_corrupt(law, r, r, 1e-6, v, corrupt);
         }
     }
     expect_error(law, 0.0, r, 0.0, v, dry, CB_ERR_NEGATIVE);
@@ -289,12 +298,15 @@ static void errors(const cb_law *law)
     half.active = 0.5;
     two.active = 2.0;
     negative_dry.volume = -v;
-    expect_error(law, r, r, 1e-6, v, negative, CB_ERR_BRIDGE_STATE);
-    expect_error(law, r, r, 1e-6, v, empty_active, CB_ERR_BRIDGE_STATE);
-    expect_error(law, r, r, -1e-6, v, liquid_inactive, CB_ERR_BRIDGE_STATE);
-    expect_error(law, r, r, 1e-6, v, half, CB_ERR_BRIDGE_STATE);
-    expect_error(law, r, r, 1e-6, v, two, CB_ERR_BRIDGE_STATE);
-    expect_error(law, r, r, 1e-6, v, negative_dry, CB_ERR_BRIDGE_STATE);
+    expect_corrupt(law, r, r, 1e-6, v, negative);
+    expect_corrupt(law, r, r, 1e-6, v, empty_active);
+    expect_corrupt(law, r, r, -1e-6, v, liquid_inactive);
+    expect_corrupt(law, r, r, 1e-6, v, half);
+    expect_corrupt(law, r, r, 1e-6, v, two);
+    expect_corrupt(law, r, r, 1e-6, v, negative_dry);
+    CHECK_STATUS(cb_bridge_check_state(&dry), CB_OK);
+    CHECK_STATUS(cb_bridge_check_state(&wet), CB_OK);
+    CHECK_STATUS(cb_bridge_check_state(NULL), CB_ERR_NULL);
     /* an active bridge without its constants, and a dry one with some */
     for (int k = 2; k < CB_BRIDGE_DOUBLES; ++k) {
         cb_bridge zero_constant = wet, negative_constant = wet, dry_constant = dry;
@@ -303,9 +315,10 @@ static void errors(const cb_law *law)
         ((double *)&dry_constant)[k] = 1.0;
         /* (the contact force may be 0: a law with none at contact; 1/lambda is 0 for
          * every law but richefeu, and for it means "evaluate in full") */
-        if (k != 3 && k != 6) expect_error(law, r, r, -1e-6, v, zero_constant, CB_ERR_BRIDGE_STATE);
-        expect_error(law, r, r, -1e-6, v, negative_constant, CB_ERR_BRIDGE_STATE);
-        expect_error(law, r, r, -1e-6, v, dry_constant, CB_ERR_BRIDGE_STATE);
+        if (k != 3 && k != 6) expect_corrupt(law, r, r, -1e-6, v, zero_constant);
+        else CHECK_STATUS(cb_bridge_check_state(&zero_constant), CB_OK);
+        expect_corrupt(law, r, r, -1e-6, v, negative_constant);
+        expect_corrupt(law, r, r, -1e-6, v, dry_constant);
     }
 
     /* -0.0 is a dry volume and a contact gap. */
@@ -507,6 +520,10 @@ static void derived_constants(void)
     CHECK(!cb_bridge_held(&law, r1, 1.01 * r2, -1e-7, &b, &quick));
     CHECK(!cb_bridge_held(&law, r1, r2, -1e-7, &dry, &quick));
     CHECK(!cb_bridge_held(&law, r1, r2, 1e-9, &dry, &quick));
+    CHECK(!cb_bridge_held(&law, r1, r2, -HUGE_VAL, &b, &quick));
+    /* a corrupted state is the engine's check's to refuse, where it enters (the held path
+     * reads only the fields it uses); the flag of a bridge that is not active, the held
+     * path too */
     const double broken[] = {NAN, -1.0, HUGE_VAL};
     for (int k = 0; k < 3; ++k) {
         cb_bridge bad_force = b, bad_volume = b, bad_flag = b, bad_rupture = b, bad_decay = b;
@@ -515,11 +532,12 @@ static void derived_constants(void)
         bad_flag.active = k == 0 ? NAN : 0.5;
         bad_rupture.rupture = broken[k];
         bad_decay.law_constant = broken[k];
-        CHECK(!cb_bridge_held(&law, r1, r2, -1e-7, &bad_force, &quick));
-        CHECK(!cb_bridge_held(&law, r1, r2, -1e-7, &bad_volume, &quick));
+        CHECK_STATUS(cb_bridge_check_state(&bad_force), CB_ERR_BRIDGE_STATE);
+        CHECK_STATUS(cb_bridge_check_state(&bad_volume), CB_ERR_BRIDGE_STATE);
+        CHECK_STATUS(cb_bridge_check_state(&bad_flag), CB_ERR_BRIDGE_STATE);
+        CHECK_STATUS(cb_bridge_check_state(&bad_rupture), CB_ERR_BRIDGE_STATE);
+        CHECK_STATUS(cb_bridge_check_state(&bad_decay), CB_ERR_BRIDGE_STATE);
         CHECK(!cb_bridge_held(&law, r1, r2, -1e-7, &bad_flag, &quick));
-        CHECK(!cb_bridge_held(&law, r1, r2, 0.5 * d, &bad_rupture, &quick));
-        CHECK(!cb_bridge_held(&law, r1, r2, 0.5 * d, &bad_decay, &quick));
     }
     /* stretched, the call where the stored constants do not give the force: 1/lambda 0
      * (the full evaluation), a strict law, another law reading the bridge */
@@ -546,22 +564,23 @@ static void derived_constants(void)
     cb_law_release(&law);
 }
 
-/* cb_bridge_held accepts exactly what cb_bridge_step holds: wherever the inline shortcut
- * returns 1, the call returns CB_OK, CB_BRIDGE_HELD and the same force bit for bit.  The
- * reproducer of issue 16 item 5 (in contact, rupture distance 0, NaN, 1/lambda = -inf, a
- * gap of -inf), then every field of a valid bridge replaced by a hostile value. */
+/* cb_bridge_held accepts exactly what cb_bridge_step holds, for every state that passes the
+ * engines' entry check (cb_bridge_check_state): wherever the inline shortcut returns 1, the
+ * call returns CB_OK, CB_BRIDGE_HELD and the same force bit for bit; a state the check
+ * refuses, the call refuses too.  The reproducer of issue 16 item 5 (in contact, rupture
+ * distance 0), then every field of a valid bridge replaced by a hostile value, at hostile
+ * gaps (NaN, infinite) too. */
 static void held_agrees_with_step(void)
 {
     cb_law law = make_law(0.0, NULL, NULL);
     const cb_bridge reproducer = {1e-12, 1.0, 0.0, 1e-4, 2e-3, 1e-6, 0.0};
-    double quick = -1.0;
-    CHECK(!cb_bridge_held(&law, 1e-3, 1e-3, -1e-6, &reproducer, &quick));
+    CHECK_STATUS(cb_bridge_check_state(&reproducer), CB_ERR_BRIDGE_STATE);
     const double r1 = 0.5e-3, r2 = 0.65e-3;
     const cb_bridge valid = active_bridge(&law, r1, r2, 7.3e-12);
     const double hostile[] = {0.0, -0.0, NAN, -HUGE_VAL, HUGE_VAL, -1.0, 1e-300, DBL_MAX};
     const double gaps[] = {-HUGE_VAL, -1e300, -1e-6, 0.0, 1e-9, 0.5 * valid.rupture,
                            valid.rupture, HUGE_VAL, NAN};
-    int held = 0, mismatched = 0;
+    int held = 0, mismatched = 0, refused = 0;
     for (int field = -1; field < CB_BRIDGE_DOUBLES; ++field)
         for (size_t h = 0; h < sizeof hostile / sizeof *hostile; ++h)
             for (size_t g = 0; g < sizeof gaps / sizeof *gaps; ++g) {
@@ -574,17 +593,26 @@ static void held_agrees_with_step(void)
                 }
                 double inline_force = -1.0, force = -2.0, released = -1.0;
                 cb_transition change = CB_BRIDGE_STAYS_DRY;
+                cb_bridge copy = b;
+                if (cb_bridge_check_state(&b) != CB_OK) {
+                    ++refused;
+                    if (cb_bridge_step(&law, r1, r2, gaps[g], 0.0, &copy, &change, &released,
+                                       &force) == CB_OK)
+                        ++mismatched;
+                    continue;
+                }
                 if (!cb_bridge_held(&law, r1, r2, gaps[g], &b, &inline_force)) continue;
                 ++held;
-                cb_bridge copy = b;
                 cb_status s = cb_bridge_step(&law, r1, r2, gaps[g], 0.0, &copy, &change,
                                              &released, &force);
                 if (s != CB_OK || change != CB_BRIDGE_HELD || !same_bits(force, inline_force))
                     ++mismatched;
             }
     CHECK(mismatched == 0);
-    CHECK(held > 0); /* the valid bridge itself is held at the gaps within its reach */
-    printf("held vs step: %d held states, %d disagreeing\n", held, mismatched);
+    CHECK(held > 0);    /* the valid bridge itself is held at the gaps within its reach */
+    CHECK(refused > 0); /* and the hostile values refused by the check */
+    printf("held vs step: %d held states, %d refused by the check, %d disagreeing\n", held,
+           refused, mismatched);
     cb_law_release(&law);
 }
 

@@ -144,9 +144,13 @@ void PairGranCapillary::held_volumes()
 }
 
 /* ----------------------------------------------------------------------
-   at the setup of each run: every bridge's constants (cb_bridge) derived again under the
-   current coefficients, which pair_coeff may have changed since the last run, or which a
-   restart file does not hold (bridges read from it keep their volume)
+   at the setup of each run, where a restart file's pair history first reaches the pair
+   loop: every stored bridge state checked (cb_bridge_check_state), once, so that the held
+   path of the loop (cb_bridge_held) reads only the fields it uses; and every bridge's
+   constants (cb_bridge) derived again under the current coefficients, which pair_coeff may
+   have changed since the last run, or which a restart file does not hold (bridges read
+   from it keep their volume).  Between setups the states change only by the core's calls,
+   which keep a valid state valid.
 ------------------------------------------------------------------------- */
 
 void PairGranCapillary::derive_bridges()
@@ -160,19 +164,30 @@ void PairGranCapillary::derive_bridges()
     const int i = list->ilist[ii];
     int *jlist = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      if (firsttouch[i][jj] == 0) continue;    // flagged 0: no bridge (see pair_force)
+      if (firsttouch[i][jj] == 0) continue;    // flagged 0: all zero (see pair_force)
       cb_bridge *bridge = bridge_of(&firstvalue[i][SIZE_BRIDGE * jj]);
-      if (bridge->active == 0.0) continue;
       const int j = jlist[jj] & NEIGHMASK;
+      // (a restart file of a build whose history is laid out otherwise is refused before,
+      // by read_restart_settings)
+      if (cb_bridge_check_state(bridge) != CB_OK) corrupt_bridge(i, j, bridge);
+      if (bridge->active == 0.0) continue;
       const int status = cb_bridge_set_volume(law(type[i], type[j]), radius[i], radius[j],
                                               bridge->volume, bridge);
-      // (a corrupted history: CB_ERR_BRIDGE_STATE, which says so; a restart file of a
-      // build whose history is laid out otherwise is refused before, by
-      // read_restart_settings)
       check_cb(error, status, "bridge constants at setup", type[i], type[j], radius[i], radius[j],
                bridge->volume, 0.0);
     }
   }
+}
+
+// a stored state that is neither dry nor a valid bridge's: stop, naming the pair
+void PairGranCapillary::corrupt_bridge(int i, int j, const cb_bridge *bridge)
+{
+  error->one(FLERR, "pair gran/capillary: the pair history of atoms {} and {} holds no valid "
+             "bridge state (volume {}, active {}, rupture {}, contact force {}, radius sum {}, "
+             "radius product {}, law constant {}): {}", atom->tag[i], atom->tag[j],
+             bridge->volume, bridge->active, bridge->rupture, bridge->force_contact,
+             bridge->radius_sum, bridge->radius_product, bridge->law_constant,
+             cb_status_message(CB_ERR_BRIDGE_STATE));
 }
 
 /* ----------------------------------------------------------------------

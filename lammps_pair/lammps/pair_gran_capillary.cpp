@@ -300,19 +300,21 @@ template <bool BRIDGES> void PairGranCapillary::form_bridges_and_forces()
       const double factor_lj = special[sbmask(j)];
       j &= NEIGHMASK;
       if (factor_lj == 0.0) continue;
-      const double delx = x[i][0] - x[j][0];
-      const double dely = x[i][1] - x[j][1];
-      const double delz = x[i][2] - x[j][2];
-      const double rsq = delx * delx + dely * dely + delz * delz;
+      PairGeometry g;
+      g.del[0] = x[i][0] - x[j][0];
+      g.del[1] = x[i][1] - x[j][1];
+      g.del[2] = x[i][2] - x[j][2];
+      g.rsq = g.del[0] * g.del[0] + g.del[1] * g.del[1] + g.del[2] * g.del[2];
       double *history = &allhistory[stride * jj];
-      const double r = sqrt(rsq);
-      const double gap = r - (radius[i] + radius[j]);
+      g.r = sqrt(g.rsq);
+      g.radi = radius[i];
+      g.radj = radius[j];
+      g.gap = g.r - (g.radi + g.radj);
       const TypePair &tp = type_pair(itype, type[j]);
       // (a run in which no type pair can hold a bridge: the contact forces alone)
       const double capillary =
-          BRIDGES ? bridge_capillary(i, j, rsq, gap, tp, bridge_of(history), per_atom) : 0.0;
-      pair_force<BRIDGES>(a, tp, i, j, delx, dely, delz, rsq, r, gap, capillary, history,
-                          touch[jj], history_update);
+          BRIDGES ? bridge_capillary(i, j, g, tp, bridge_of(history), per_atom) : 0.0;
+      pair_force<BRIDGES>(a, tp, i, j, g, capillary, history, touch[jj], history_update);
     }
   }
 }
@@ -372,16 +374,17 @@ int PairGranCapillary::skip_apart(const AtomArrays &a, int i, const int *jlist,
    time in the wet loop (bench/README.md).  Dry pairs that cannot get a bridge skip both.
 ------------------------------------------------------------------------- */
 
-double PairGranCapillary::bridge_capillary(int i, int j, double rsq, double gap,
+double PairGranCapillary::bridge_capillary(int i, int j, const PairGeometry &g,
                                            const TypePair &tp, cb_bridge *bridge, int per_atom)
 {
-  if (per_atom) return protocol_bridge(i, j, gap, tp, bridge);
-  double *radius = atom->radius;
+  if (per_atom) return protocol_bridge(i, j, g.gap, tp, bridge);
   double capillary = 0.0;
-  if (!(!beyond_reach(rsq, gap, tp) &&
-        cb_bridge_held(tp.law, radius[i], radius[j], gap, bridge, &capillary)) &&
+  // (beyond_reach, its terms split: a bridge in contact, gap <= 0, is never beyond the design
+  // rupture distance (>= 0), so the held contact path tests the cutoff alone)
+  if (!(g.rsq < tp.cutsq && cb_bridge_held(tp.law, g.radi, g.radj, g.gap, bridge, &capillary) &&
+        (g.gap <= 0.0 || !cb_bridge_beyond_reach(g.gap, tp.design_rupture))) &&
       (bridge->active != 0.0 || (tp.formation_volume > 0.0 && wet_pair(i, j, tp))))
-    capillary = advance_bridge(i, j, rsq, gap, tp, bridge);
+    capillary = advance_bridge(i, j, g.rsq, g.gap, tp, bridge);
   return capillary;
 }
 
@@ -483,9 +486,8 @@ double PairGranCapillary::advance_bridge(int i, int j, double rsq, double gap,
 
 template <bool BRIDGES>
 void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int i, int j,
-                                   double delx, double dely, double delz, double rsq, double r,
-                                   double gap, double capillary, double *history, int &touch,
-                                   int history_update)
+                                   const PairGeometry &g, double capillary, double *history,
+                                   int &touch, int history_update)
 {
   cb_bridge *bridge = bridge_of(history);
   double *shear = &history[HIST_SHEAR];
@@ -494,21 +496,19 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
   // bridge, and a pair flagged 0 has an all-zero history: cleared here with the flag, by
   // Protocol 1 the same way, and by FixNeighHistory for every pair it does not carry over
   // at re-neighboring.  The pair loops rely on it to skip flagged-0 pairs that are apart.
-  const int in_contact = tp.contact_on && gap < 0.0;
+  const int in_contact = tp.contact_on && g.gap < 0.0;
   touch = (in_contact || (BRIDGES && bridge->active != 0.0)) ? 1 : 0;
   if (!in_contact) {
     shear[0] = shear[1] = shear[2] = 0.0;
     if (!BRIDGES || capillary == 0.0) return;
   }
 
-  if (r == 0.0) coincident_atoms(i, j);
-  const double del[3] = {delx, dely, delz};
-  const double rinv = 1.0 / r;
+  if (g.r == 0.0) coincident_atoms(i, j);
+  const double rinv = 1.0 / g.r;
   double contact = 0.0;
   double fs[3] = {0.0, 0.0, 0.0};
-  if (in_contact)
-    contact = contact_force(a, tp, i, j, del, rsq, rinv, gap, shear, history_update, fs);
-  apply_pair_force(a, i, j, del, rinv, (contact - capillary) * rinv, fs);
+  if (in_contact) contact = contact_force(a, tp, i, j, g, rinv, shear, history_update, fs);
+  apply_pair_force(a, i, j, g, rinv, (contact - capillary) * rinv, fs);
 }
 
 /* ----------------------------------------------------------------------
@@ -518,14 +518,13 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
 ------------------------------------------------------------------------- */
 
 double PairGranCapillary::contact_force(const AtomArrays &a, const TypePair &tp, int i, int j,
-                                        const double *del, double rsq, double rinv,
-                                        double gap, double *shear, int history_update,
-                                        double *fs)
+                                        const PairGeometry &g, double rinv, double *shear,
+                                        int history_update, double *fs)
 {
   double **v = a.v;
   double **omega = a.omega;
-  const double radi = a.radius[i], radj = a.radius[j];
-  const double delx = del[0], dely = del[1], delz = del[2];
+  const double radi = g.radi, radj = g.radj, rsq = g.rsq, gap = g.gap;
+  const double delx = g.del[0], dely = g.del[1], delz = g.del[2];
   const double vr1 = v[i][0] - v[j][0];
   const double vr2 = v[i][1] - v[j][1];
   const double vr3 = v[i][2] - v[j][2];
@@ -570,14 +569,15 @@ double PairGranCapillary::contact_force(const AtomArrays &a, const TypePair &tp,
    the contact point (with its torques), and the tally
 ------------------------------------------------------------------------- */
 
-void PairGranCapillary::apply_pair_force(const AtomArrays &a, int i, int j, const double *del,
-                                         double rinv, double ccel, const double *fs)
+void PairGranCapillary::apply_pair_force(const AtomArrays &a, int i, int j,
+                                         const PairGeometry &g, double rinv, double ccel,
+                                         const double *fs)
 {
   double **f = a.f;
   double **torque = a.torque;
-  const double delx = del[0], dely = del[1], delz = del[2];
+  const double delx = g.del[0], dely = g.del[1], delz = g.del[2];
   const double fs1 = fs[0], fs2 = fs[1], fs3 = fs[2];
-  const double radi = a.radius[i], radj = a.radius[j];
+  const double radi = g.radi, radj = g.radj;
   const double fx = delx * ccel + fs1;
   const double fy = dely * ccel + fs2;
   const double fz = delz * ccel + fs3;

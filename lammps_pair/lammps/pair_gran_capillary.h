@@ -78,6 +78,13 @@ class PairGranCapillary : public Pair, public CapillaryBridges {
     int *mask;
     int nlocal, newton_pair;
   };
+  // One pair's geometry, computed once by the pair loop and passed on by value: read from
+  // the atom arrays in each step, the radii were loaded again after every force store
+  struct PairGeometry {
+    double del[3];        // x_i - x_j
+    double rsq, r, gap;   // |del|^2, |del|, r - radi - radj
+    double radi, radj;
+  };
 
   cb_dashpot_rule dashpot;    // approach (Richefeu 2007 eq. 3), both, repulsive
   double dt;
@@ -117,6 +124,7 @@ class PairGranCapillary : public Pair, public CapillaryBridges {
   __attribute__((noinline)) double advance_bridge(int i, int j, double rsq, double gap,
                                                   const TypePair &tp, cb_bridge *bridge);
   void derive_bridges();
+  [[noreturn]] void corrupt_bridge(int i, int j, const cb_bridge *bridge);
   // BRIDGES false: a run without bridges (bridges_possible 0)
   template <bool BRIDGES> void form_bridges_and_forces();
   // the pair loop's steps, inline in it (as one function they were: its registers, its
@@ -126,20 +134,19 @@ class PairGranCapillary : public Pair, public CapillaryBridges {
                                                                const int *jlist,
                                                                const int *touch, int jj,
                                                                int jnum);
-  __attribute__((always_inline)) inline double bridge_capillary(int i, int j, double rsq,
-                                                                double gap, const TypePair &tp,
+  __attribute__((always_inline)) inline double bridge_capillary(int i, int j,
+                                                                const PairGeometry &g,
+                                                                const TypePair &tp,
                                                                 cb_bridge *bridge,
                                                                 int per_atom);
   template <bool BRIDGES>
-  void pair_force(const AtomArrays &a, const TypePair &tp, int i, int j, double delx,
-                  double dely, double delz, double rsq, double r, double gap, double capillary,
-                  double *history, int &touch, int history_update);
+  void pair_force(const AtomArrays &a, const TypePair &tp, int i, int j, const PairGeometry &g,
+                  double capillary, double *history, int &touch, int history_update);
   __attribute__((always_inline)) inline double
-  contact_force(const AtomArrays &a, const TypePair &tp, int i, int j, const double *del,
-                double rsq, double rinv, double gap, double *shear, int history_update,
-                double *fs);
+  contact_force(const AtomArrays &a, const TypePair &tp, int i, int j, const PairGeometry &g,
+                double rinv, double *shear, int history_update, double *fs);
   __attribute__((always_inline)) inline void apply_pair_force(const AtomArrays &a, int i, int j,
-                                                              const double *del, double rinv,
+                                                              const PairGeometry &g, double rinv,
                                                               double ccel, const double *fs);
   void check_periodic_images();
   void check_timestep();

@@ -9,7 +9,10 @@
  *      crash; on CB_OK the force finite and >= 0, the rupture distance finite and > 0, the
  *      force zero beyond it, and |dF/dgap| within cb_capillary_stiffness_bound;
  *  (c) cb_bridge_held against cb_bridge_step: a bridge state of 7 doubles (raw, or a valid
- *      one with one field overwritten) and a gap; where cb_bridge_held returns 1,
+ *      one with one field overwritten) and a gap.  A state the engines' entry check
+ *      (cb_bridge_check_state) refuses, cb_bridge_step refuses too, touching nothing, and
+ *      an overwritten field outside its range is refused; for a state the check accepts
+ *      (the only ones an engine gives cb_bridge_held), where cb_bridge_held returns 1,
  *      cb_bridge_step on a copy returns CB_OK, the transition HELD and the same force bit
  *      for bit, and cb_bridge_held has left the state as it was. */
 #include "capbridge.h"
@@ -192,7 +195,17 @@ static void fuzz_every_law(uint8_t model_byte, input *in)
     release_law(&law);
 }
 
-/* (c) cb_bridge_held agrees with cb_bridge_step wherever it answers. */
+/* (c): a value outside the range of field k of an active bridge's state (volume, active,
+ * rupture, contact force, radius sum, radius product, law constant; capbridge.h). */
+static int out_of_range(int k, double value)
+{
+    if (k == 1) return value != 1.0;
+    if (!(value <= DBL_MAX)) return 1; /* NaN, +inf */
+    return (k == 3 || k == 6) ? !(value >= 0.0) : !(value > 0.0);
+}
+
+/* (c) cb_bridge_held agrees with cb_bridge_step wherever it answers, on every state the
+ * entry check accepts; the check refuses what cb_bridge_step refuses. */
 static void fuzz_bridge_held(uint8_t model_byte, input *in)
 {
     uint8_t options = take_byte(in), corrupt = take_byte(in);
@@ -212,14 +225,23 @@ static void fuzz_bridge_held(uint8_t model_byte, input *in)
         }
         double fields[CB_BRIDGE_DOUBLES];
         memcpy(fields, &bridge, sizeof fields);
-        if (corrupt % 8 < CB_BRIDGE_DOUBLES) fields[corrupt % 8] = raw[0];
+        const int field = corrupt % 8, was_active = bridge.active == 1.0;
+        if (field < CB_BRIDGE_DOUBLES) fields[field] = raw[0];
         memcpy(&bridge, fields, sizeof bridge);
+        if (was_active && field < CB_BRIDGE_DOUBLES && out_of_range(field, raw[0]) &&
+            cb_bridge_check_state(&bridge) != CB_ERR_BRIDGE_STATE)
+            abort();
         if (options & 32) gap = bridge.rupture * (2.0 * take_unit(in) - 0.5);
     }
     cb_bridge before = bridge, copy = bridge;
     double held = 0.0, stepped = 0.0, released = 0.0;
-    if (cb_bridge_held(&law, r1, r2, gap, &bridge, &held)) {
-        cb_transition transition = CB_BRIDGE_STAYS_DRY;
+    cb_transition transition = CB_BRIDGE_STAYS_DRY;
+    if (cb_bridge_check_state(&bridge) != CB_OK) {
+        if (cb_bridge_step(&law, r1, r2, gap, 0.0, &copy, &transition, &released, &stepped) ==
+                CB_OK ||
+            memcmp(&before, &copy, sizeof copy) != 0)
+            abort();
+    } else if (cb_bridge_held(&law, r1, r2, gap, &bridge, &held)) {
         if (memcmp(&before, &bridge, sizeof bridge) != 0) abort();
         if (cb_bridge_step(&law, r1, r2, gap, 0.0, &copy, &transition, &released, &stepped) !=
                 CB_OK ||

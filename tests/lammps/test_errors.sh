@@ -1,6 +1,6 @@
 #!/bin/sh
-# Bad input, one test each: LAMMPS stops with an error whose message names the problem;
-# and the time-step check warns once, with the numbers.
+# Bad input, one test each: LAMMPS stops with an error whose message names the problem (a
+# corrupted restart file too); and the time-step check warns once, with the numbers.
 . "$(dirname "$0")/lib.sh" "$@"
 
 GOOD="100 40 0.3 0.4 law richefeu gamma 0.0728 volume 1e-12"
@@ -75,6 +75,44 @@ grep -q "ERROR.*pair gran/capillary: atoms 1 and 2 are at the same position (0, 
     fail "coincident: no error naming atoms 1 and 2: $(grep -h -m1 ERROR "$TMP/coincident.log")"
 ! grep -qi "nan" "$TMP/coincident.log" || fail "coincident: a NaN was printed before the error"
 echo "coincident: $(grep -h -m1 ERROR "$TMP/coincident.log" "$TMP/coincident.log.screen" 2>/dev/null | head -1)"
+
+# a restart file whose pair history holds a corrupted bridge: refused at the first force
+# pass of the run that reads it, with an error naming the pair (the held path of the pair
+# loop reads only the fields it uses, so the state is checked once, where it enters).
+# patch_bridges FILE OFFSET BYTES: in every active bridge of volume 1e-11 in FILE (the
+# volume's 8 bytes then those of active = 1.0, little-endian), overwrite the 8 bytes OFFSET
+# bytes after the volume's with BYTES (printf's octal escapes); prints how many
+patch_bridges() {
+    found=$(od -A d -v -t x1 "$1" | awk -v pattern="956479e17ffda53d000000000000f03f" '
+        { for (k = 2; k <= NF; k++) byte[n++] = $k }
+        END { for (p = 0; p + 16 <= n; p++) {
+                  s = ""; for (q = 0; q < 16; q++) s = s byte[p + q]
+                  if (s == pattern) print p } }')
+    for start in $found; do
+        # shellcheck disable=SC2059 # the bytes are the format: its octal escapes
+        printf "$3" | dd of="$1" bs=1 seek=$((start + $2)) conv=notrunc 2>/dev/null
+    done
+    echo "$found" | awk 'NF { n++ } END { print n + 0 }'
+}
+lmp 1 "$TMP/corrupt_write.log" -in "$DECKS/in.corrupt" -var file "$TMP/bridge.restart" \
+    >/dev/null 2>&1 || fail "corrupt: writing the restart file failed: $(grep -m1 ERROR "$TMP/corrupt_write.log")"
+# corrupt_case NAME OFFSET BYTES FIELD: FIELD (the state's field at OFFSET) set to BYTES
+corrupt_case() {
+    checks=$((checks + 1))
+    cp "$TMP/bridge.restart" "$TMP/$1.restart"
+    patched=$(patch_bridges "$TMP/$1.restart" "$2" "$3")
+    # the bridge is in the history of both its atoms
+    [ "$patched" -eq 2 ] || { fail "$1: $patched bridges found in the restart file, expected 2"; return; }
+    lmp 1 "$TMP/$1.log" -in "$DECKS/in.corrupt" -var stage read -var file "$TMP/$1.restart" \
+        >/dev/null 2>&1 && { fail "$1: LAMMPS read the corrupted restart file and ran"; return; }
+    line=$(grep -h -m1 'ERROR' "$TMP/$1.log" "$TMP/$1.log.screen" 2>/dev/null | head -1)
+    printf '%s\n' "$line" | grep -Eq "pair history of atoms (1 and 2|2 and 1) holds no valid bridge state \(.*$4.*\): the stored bridge state is not a valid bridge" ||
+        { fail "$1: error '$line' does not name the pair and its state"; return; }
+    echo "$1: $line"
+}
+corrupt_case corrupt_active 8 '\000\000\000\000\000\000\340\077' "active 0.5"
+# a field the held path does not read in contact: refused all the same
+corrupt_case corrupt_law_constant 48 '\000\000\000\000\000\000\360\277' "law constant -1"
 
 # the time-step check: dt = 1e-3 s is far above 10 % of pi sqrt(m/k_n) (about 1.6e-4 s)
 checks=$((checks + 1))
