@@ -348,12 +348,17 @@ namespace ContactModels {
       const double ra = swap ? d.radj : d.radi;
       const double rb = swap ? d.radi : d.radj;
       const cb_law *law = laws_.of(d.itype, d.jtype);
-      if (updating_ && update->setupflag && bridge.active != 0.0) {
-        // (a restart file of a build whose history was laid out otherwise, 2 values a pair
-        // before the bridge kept its constants: CB_ERR_BRIDGE_STATE, which says so)
-        check(cb_bridge_set_volume(law, ra, rb, bridge.volume, &bridge),
-              "bridge constants at setup", d, gap, bridge.volume);
-        std::memcpy(hist, &bridge, sizeof bridge);
+      if (updating_ && update->setupflag) {
+        // every state checked once where it enters (a restart file's, at the first pass of a
+        // run), so that cb_bridge_held below may read only what it uses; a restart file of a
+        // build whose history was laid out otherwise (2 values a pair before the bridge kept
+        // its constants) is CB_ERR_BRIDGE_STATE, which says so
+        check(cb_bridge_check_state(&bridge), "bridge state at setup", d, gap, bridge.volume);
+        if (bridge.active != 0.0) {
+          check(cb_bridge_set_volume(law, ra, rb, bridge.volume, &bridge),
+                "bridge constants at setup", d, gap, bridge.volume);
+          std::memcpy(hist, &bridge, sizeof bridge);
+        }
       }
       // the force of the bridge's state after this pass: from cb_bridge_step where the
       // bridge is advanced, else from cb_bridge_force below
