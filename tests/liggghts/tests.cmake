@@ -100,10 +100,16 @@ add_test(NAME liggghts_protocol3_receiver
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/protocol3_receiver.py
                  $<TARGET_FILE:liggghts_protocol3_reference> ${CAPBRIDGE_LIGGGHTS_ENV}
                  --workdir ${_liggghts_work}/protocol3_receiver)
+# a restart file with a corrupted bridge (active 0.5; law constant -1) refused at the first
+# pass of the run, the error naming both particles; the unpatched file runs with the same force
+add_test(NAME liggghts_corrupt_restart
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/corrupt_restart.py
+                 ${CAPBRIDGE_LIGGGHTS_ENV} --workdir ${_liggghts_work}/corrupt_restart)
 set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts_bad_input
                      liggghts_friction liggghts_held liggghts_beyond_reach
                      liggghts_easo_comparison liggghts_between_runs
                      liggghts_restart liggghts_restart_mpi liggghts_liquid_account
                      liggghts_timestep liggghts_protocols liggghts_protocol1_reference
                      liggghts_protocols_restart liggghts_protocol3_receiver
+                     liggghts_corrupt_restart
                      PROPERTIES LABELS "liggghts" TIMEOUT 600)
