@@ -311,9 +311,10 @@ namespace ContactModels {
     {
       if (wall_) return;
       // dry and certainly apart: no force, and no bridge can form (only at contact), so no
-      // square root and no call into the core
+      // square root and no call into the core; not at a run's setup, where pair_force checks
+      // every stored state once (a restart file's: active 0 with other values is corrupt)
       if (scdata.contact_history && scdata.contact_history[history_offset_ + 1] == 0.0 &&
-          cb_certainly_apart(scdata.rsq, scdata.radsum)) {
+          !update->setupflag && cb_certainly_apart(scdata.rsq, scdata.radsum)) {
         if (scdata.contact_flags) *scdata.contact_flags &= ~CONTACT_COHESION_MODEL;
         return;
       }

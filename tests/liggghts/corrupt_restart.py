@@ -17,7 +17,11 @@ V^(1/3) at theta 0, richefeu's 1/lambda).  Then a second LIGGGHTS reads the file
     pass of the run).  Without that check these two states are refused all the same, by the
     same core check inside cb_bridge_set_volume ("bridge constants at setup", measured
     with the check line removed from a copy of the header): the error's label pins the
-    check that comes first, every state's, active or not.
+    check that comes first, every state's, active or not;
+  - active set to 0 with the other six values kept: refused the same way.  The pair is apart
+    (gap 50 um), where the model skips a pair whose active value is 0 without reading the
+    rest; at a run's setup it no longer skips, so this state is checked too (before, the run
+    went on with the bridge gone, and under Protocols 2, 3 its liquid lost without a word).
 
 usage: corrupt_restart.py LIGGGHTS_ENV [--workdir DIR]
 """
@@ -36,7 +40,8 @@ FIELDS = ("volume", "active", "rupture", "force_contact", "radius_sum", "radius_
           "law_constant")
 # (case, field, value written into it)
 CORRUPTIONS = [("corrupt_active", "active", 0.5),
-               ("corrupt_law_constant", "law_constant", -1.0)]
+               ("corrupt_law_constant", "law_constant", -1.0),
+               ("corrupt_inactive", "active", 0.0)]
 
 
 def run(env, workdir, name, read, restart):
