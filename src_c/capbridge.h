@@ -64,17 +64,26 @@ typedef struct cb_message {
 
 /* ----------------------------------------------------------------- laws */
 
+/* The laws, one row each: its cb_model value (CB_MODEL_ + the first column), the C name of its
+ * registry row (cb_<second>_ops, in the law's own file: laws.h) and its name as the keyword
+ * parser spells it.  Adding a law is its file and one row here; the enum, the registry and
+ * cb_law_names are made from this list. */
+#define CB_LAWS(ROW)                                                                          \
+    ROW(RICHEFEU, richefeu, "richefeu")      /* Richefeu 2007 eqs. 4-11, exponential decay */ \
+    ROW(WILLETT, willett, "willett")         /* Willett 2000 full fit, Gladkyy eqs. 6-7 */    \
+    ROW(WILLETT_REDUCED, willett_reduced, "willett/reduced") /* closed form, Gladkyy eq. 8 */ \
+    ROW(RABINOVICH, rabinovich, "rabinovich") /* with Lambert 2008, Gladkyy eqs. 9-12 */      \
+    ROW(RABINOVICH_UNCORRECTED, rabinovich_uncorrected, "rabinovich/uncorrected") /* eq. 11 */ \
+    ROW(WEIGERT, weigert, "weigert")         /* Weigert & Ripperger 1999, Gladkyy eq. 5 */    \
+    ROW(SOULIE, soulie, "soulie")            /* Soulie 2006 */                                \
+    ROW(TABLE, table, "table")               /* exact Laplace-Young solution, tabulated */
+
+#define CB_MODEL_ENUMERATOR(value, row, name) CB_MODEL_##value,
 typedef enum cb_model {
-    CB_MODEL_RICHEFEU = 0,           /* Richefeu 2007 eqs. 4-11, exponential decay */
-    CB_MODEL_WILLETT,                /* Willett 2000 full fit, Gladkyy eqs. 6-7, app. B */
-    CB_MODEL_WILLETT_REDUCED,        /* Willett 2000 closed form, Gladkyy eq. 8 */
-    CB_MODEL_RABINOVICH,             /* Rabinovich 2005 with Lambert 2008, Gladkyy eqs. 9-12 */
-    CB_MODEL_RABINOVICH_UNCORRECTED, /* Rabinovich 2005 as published, Gladkyy eq. 11 */
-    CB_MODEL_WEIGERT,                /* Weigert & Ripperger 1999, Gladkyy eq. 5, app. A */
-    CB_MODEL_SOULIE,                 /* Soulie 2006 */
-    CB_MODEL_TABLE,                  /* exact Laplace-Young solution, tabulated */
+    CB_LAWS(CB_MODEL_ENUMERATOR) /* CB_MODEL_RICHEFEU = 0, CB_MODEL_WILLETT, ... */
     CB_MODEL_COUNT
 } cb_model;
+#undef CB_MODEL_ENUMERATOR
 
 /* The rupture (debonding) distance rule. DEFAULT means the law's own paper's rule. */
 typedef enum cb_rupture_rule {

@@ -1,7 +1,8 @@
 /* law.c — a law as a value: the registry of the laws, names, keywords, preparation, and
  * the force dispatcher that applies the overlap, rupture and validity rules around each
- * law's formula.  Adding a law: its file with its row (cb_law_ops, laws.h), its cb_model
- * value, its row below and its name in cb_law_names; tests/test_registry.c checks them.
+ * law's formula.  Adding a law: its file with its row (cb_law_ops, laws.h) and one row of
+ * CB_LAWS (capbridge.h), from which the registry below and cb_law_names are made;
+ * tests/test_registry.c checks each row's name against its list entry.
  * What the CLI and the engines know of a law (its name, its own keywords, whether it is
  * tabulated) they read from its row through the functions below. */
 #include "laws.h"
@@ -13,16 +14,9 @@
 #include <string.h>
 
 
-const cb_law_ops *const cb_law_registry[] = {
-    [CB_MODEL_RICHEFEU] = &cb_richefeu_ops,
-    [CB_MODEL_WILLETT] = &cb_willett_ops,
-    [CB_MODEL_WILLETT_REDUCED] = &cb_willett_reduced_ops,
-    [CB_MODEL_RABINOVICH] = &cb_rabinovich_ops,
-    [CB_MODEL_RABINOVICH_UNCORRECTED] = &cb_rabinovich_uncorrected_ops,
-    [CB_MODEL_WEIGERT] = &cb_weigert_ops,
-    [CB_MODEL_SOULIE] = &cb_soulie_ops,
-    [CB_MODEL_TABLE] = &cb_table_ops,
-};
+#define CB_LAW_REGISTRY_ENTRY(value, row, name) [CB_MODEL_##value] = &cb_##row##_ops,
+const cb_law_ops *const cb_law_registry[] = {CB_LAWS(CB_LAW_REGISTRY_ENTRY)};
+#undef CB_LAW_REGISTRY_ENTRY
 /* one row per cb_model (a row left out in the middle is NULL: test_registry finds it) */
 typedef char registry_has_a_row_per_model[sizeof cb_law_registry / sizeof *cb_law_registry ==
                                                   CB_MODEL_COUNT ? 1 : -1];
@@ -49,11 +43,10 @@ const char *cb_model_name(cb_model model)
     return row_of(model) ? row_of(model)->name : "unknown";
 }
 
-const char *cb_law_names(void)
-{
-    return "richefeu, willett, willett/reduced, rabinovich, rabinovich/uncorrected, "
-           "weigert, soulie, table";
-}
+/* ", richefeu, willett, ..." at compile time from the list, without its first ", " */
+#define CB_LAW_LISTED_NAME(value, row, name) ", " name
+const char *cb_law_names(void) { return CB_LAWS(CB_LAW_LISTED_NAME) + 2; }
+#undef CB_LAW_LISTED_NAME
 
 int cb_model_tabulated(cb_model model)
 {

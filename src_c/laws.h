@@ -83,9 +83,9 @@ typedef struct cb_law_ops {
 
 /* The registry (law.c), indexed by cb_model, and each law's row. */
 extern const cb_law_ops *const cb_law_registry[];
-extern const cb_law_ops cb_richefeu_ops, cb_willett_ops, cb_willett_reduced_ops,
-    cb_rabinovich_ops, cb_rabinovich_uncorrected_ops, cb_weigert_ops, cb_soulie_ops,
-    cb_table_ops;
+#define CB_LAW_ROW_DECLARATION(value, row, name) extern const cb_law_ops cb_##row##_ops;
+CB_LAWS(CB_LAW_ROW_DECLARATION)
+#undef CB_LAW_ROW_DECLARATION
 
 /* The row of a law whose model is valid (a prepared law's). */
 static inline const cb_law_ops *cb_law_ops_of(const cb_law *law)
