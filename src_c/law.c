@@ -45,7 +45,11 @@ const char *cb_model_name(cb_model model)
 
 /* ", richefeu, willett, ..." at compile time from the list, without its first ", " */
 #define CB_LAW_LISTED_NAME(value, row, name) ", " name
-const char *cb_law_names(void) { return CB_LAWS(CB_LAW_LISTED_NAME) + 2; }
+const char *cb_law_names(void)
+{
+    static const char listed[] = CB_LAWS(CB_LAW_LISTED_NAME);
+    return listed + 2;
+}
 #undef CB_LAW_LISTED_NAME
 
 int cb_model_tabulated(cb_model model)
