@@ -30,26 +30,7 @@ import liggghts_common as lc  # noqa: E402
 R, V0, OVERLAP, SLOW = 1e-3, 1e-12, 1e-6, 1e-7   # SLOW: A's last speed, m per step
 XB = 1.2e-3            # B; A on the other side of x = 0 (2 ranks: 2 1 1)
 STEPS = 2300
-DECK = """units           si
-atom_style      granular
-atom_modify     map array
-boundary        f f f
-newton          off
-communicate     single vel yes
-processors      {ranks} 1 1
-region          box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box
-create_box      1 box
-neighbor        1e-4 bin
-neigh_modify    delay 0
-fix m1 all property/global kn peratomtypepair 1 100
-fix m2 all property/global kt peratomtypepair 1 100
-fix m3 all property/global gamman peratomtypepair 1 0
-fix m4 all property/global gammat peratomtypepair 1 0
-fix m5 all property/global coefficientFriction peratomtypepair 1 0.3
-fix m6 all property/global surfaceTension scalar 0.0728
-fix m7 all property/global contactAngle peratomtype 0
-fix freeLiquid all property/atom freeLiquid scalar yes yes no {v0!r}
-pair_style      gran model hooke/stiffness tangential history cohesion capillary &
+DECK = """pair_style      gran model hooke/stiffness tangential history cohesion capillary &
                 law richefeu liquid protocol2 tally on
 pair_coeff      * *
 timestep        1e-6
@@ -94,7 +75,8 @@ def rupture_distance(cli, volume):
 def run(env, workdir, ranks):
     deck = os.path.join(workdir, "in.beyond_%d" % ranks)
     with open(deck, "w") as f:
-        f.write(DECK.format(ranks=ranks, v0=V0, xa=XB - 2 * R + OVERLAP, xb=XB,
+        f.write(lc.free_liquid_header(ranks, ("-0.01", "0.01"), "1e-4", "100", "0.3", V0) +
+                DECK.format(xa=XB - 2 * R + OVERLAP, xb=XB,
                             xc=XB + 2 * R - OVERLAP, d=2 * R, slow=SLOW, steps=STEPS))
     code, log = lc.liggghts(env, deck, [], workdir, ranks=ranks, log="log.beyond_%d" % ranks)
     # the warning interrupts the thermo block: every row of 8 numbers

@@ -96,6 +96,35 @@ def check_models_current(env):
                                             digest.hexdigest()[:16]))
 
 
+def free_liquid_header(ranks, box, neighbor, stiffness, friction, free):
+    """The start of a LIGGGHTS deck with per-atom free liquid: SI units, `ranks` along x, a
+    cube box of x from box[0] to box[1] (y and z +-0.01 m), a bin neighbor skin `neighbor`,
+    undamped k_n = k_t = `stiffness`, friction `friction`, water's surface tension, theta 0,
+    and fix freeLiquid with `free` m^3 per atom.  Each argument is written as given (a
+    number by repr), so that the deck is the same text for the same values."""
+    return """units           si
+atom_style      granular
+atom_modify     map array
+boundary        f f f
+newton          off
+communicate     single vel yes
+processors      {ranks} 1 1
+region          box block {x0} {x1} -0.01 0.01 -0.01 0.01 units box
+create_box      1 box
+neighbor        {neighbor} bin
+neigh_modify    delay 0
+fix m1 all property/global kn peratomtypepair 1 {stiffness}
+fix m2 all property/global kt peratomtypepair 1 {stiffness}
+fix m3 all property/global gamman peratomtypepair 1 0
+fix m4 all property/global gammat peratomtypepair 1 0
+fix m5 all property/global coefficientFriction peratomtypepair 1 {friction}
+fix m6 all property/global surfaceTension scalar 0.0728
+fix m7 all property/global contactAngle peratomtype 0
+fix freeLiquid all property/atom freeLiquid scalar yes yes no {free!r}
+""".format(ranks=ranks, x0=box[0], x1=box[1], neighbor=neighbor, stiffness=stiffness,
+           friction=friction, free=free)
+
+
 def two_spheres_deck(kn, mu, gamma, cohesion, x2, diameter):
     """The start of a LIGGGHTS deck: two spheres of `diameter` at x = 0 and x = x2 (both on
     the x axis, a 2 cm box), a linear spring k_n (hooke/stiffness, no damping, k_t 1e4 N/m,

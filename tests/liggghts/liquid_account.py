@@ -25,26 +25,10 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import liggghts_common as lc  # noqa: E402
 
-HEADER = """units           si
-atom_style      granular
-atom_modify     map array
-boundary        f f f
-newton          off
-communicate     single vel yes
-processors      {ranks} 1 1
-region          box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box
-create_box      1 box
-neighbor        5e-4 bin
-neigh_modify    delay 0
-fix m1 all property/global kn peratomtypepair 1 1000
-fix m2 all property/global kt peratomtypepair 1 1000
-fix m3 all property/global gamman peratomtypepair 1 0
-fix m4 all property/global gammat peratomtypepair 1 0
-fix m5 all property/global coefficientFriction peratomtypepair 1 0.5
-fix m6 all property/global surfaceTension scalar 0.0728
-fix m7 all property/global contactAngle peratomtype 0
-fix freeLiquid all property/atom freeLiquid scalar yes yes no {free!r}
-"""
+def header(ranks, free):
+    """The deck's start: k_n = k_t = 1000 N/m, friction 0.5, `free` m^3 per atom."""
+    return lc.free_liquid_header(ranks, ("-0.01", "0.01"), "5e-4", "1000", "0.5", free)
+
 PAIR = """pair_style      gran model hooke/stiffness tangential history cohesion capillary &
                 law richefeu liquid protocol2 tally on
 pair_coeff      * *
@@ -98,7 +82,7 @@ def reissued(env, workdir):
     ok = True
     for again in (True, False):
         name = "reissue" if again else "reissue_control"
-        path = deck(workdir, name, HEADER.format(ranks=1, free=free) + PAIR +
+        path = deck(workdir, name, header(1, free) + PAIR +
                     REISSUE.format(again=PAIR if again else ""))
         code, log = lc.liggghts(env, path, [], workdir, log="log." + name)
         if code != 0:
@@ -123,7 +107,7 @@ def reissued(env, workdir):
 def lost(env, workdir, ranks):
     free = 1e-12
     name = "lost.%d" % ranks
-    path = deck(workdir, name, HEADER.format(ranks=ranks, free=free) + PAIR + LOST)
+    path = deck(workdir, name, header(ranks, free) + PAIR + LOST)
     code, log = lc.liggghts(env, path, [], workdir, ranks=ranks, log="log." + name)
     if code != 0:
         lc.fail("%s: %s" % (name, lc.error_line(log) or log[-1500:]))

@@ -62,26 +62,7 @@ def deck(ranks):
                     for k, s in enumerate(SPHERES))
     free = "".join("set             atom %d property/atom freeLiquid %r\n" % (k + 1, s[2] * V0)
                    for k, s in enumerate(SPHERES))
-    return """units           si
-atom_style      granular
-atom_modify     map array
-boundary        f f f
-newton          off
-communicate     single vel yes
-processors      {ranks} 1 1
-region          box block -0.0105 0.0095 -0.01 0.01 -0.01 0.01 units box
-create_box      1 box
-neighbor        2e-4 bin
-neigh_modify    delay 0
-fix m1 all property/global kn peratomtypepair 1 100
-fix m2 all property/global kt peratomtypepair 1 100
-fix m3 all property/global gamman peratomtypepair 1 0
-fix m4 all property/global gammat peratomtypepair 1 0
-fix m5 all property/global coefficientFriction peratomtypepair 1 0.3
-fix m6 all property/global surfaceTension scalar 0.0728
-fix m7 all property/global contactAngle peratomtype 0
-fix freeLiquid all property/atom freeLiquid scalar yes yes no 0
-{atoms}{radii}timestep        1e-6
+    return lc.free_liquid_header(ranks, ("-0.0105", "0.0095"), "2e-4", "100", "0.3", 0) + """{atoms}{radii}timestep        1e-6
 # the per-atom free liquid can be set only after a run: a dry one first
 pair_style      gran model hooke/stiffness tangential history
 pair_coeff      * *
@@ -102,7 +83,7 @@ thermo_style    custom step c_free c_bridged
 thermo_modify   format float %.17g norm no
 thermo          1
 run             {steps}
-""".format(ranks=ranks, atoms=atoms, radii=radii, free=free, steps=STEPS)
+""".format(atoms=atoms, radii=radii, free=free, steps=STEPS)
 
 
 def snapshots(path):
