@@ -10,6 +10,7 @@
  * is about the exact boundary (held at d, ruptured just beyond). */
 #include "capbridge.h"
 #include "check.h"
+#include "test_law.h"
 
 #include <float.h>
 #include <math.h>
@@ -17,20 +18,6 @@
 #include <string.h>
 
 #define PI_L 3.14159265358979323846264338327950288L
-
-static cb_law make_law(double theta_degrees, const char *rupture, const char *validity)
-{
-    cb_law law;
-    cb_message msg;
-    char text[32];
-    CHECK_STATUS(cb_law_init(&law, CB_MODEL_RICHEFEU, 0.072, 0.0), CB_OK);
-    snprintf(text, sizeof text, "%.17g", theta_degrees);
-    CHECK_STATUS(cb_law_configure(&law, "theta", text, &msg), CB_OK);
-    if (rupture) CHECK_STATUS(cb_law_configure(&law, "rupture", rupture, &msg), CB_OK);
-    if (validity) CHECK_STATUS(cb_law_configure(&law, "validity", validity, &msg), CB_OK);
-    CHECK_STATUS(cb_law_prepare(&law, &msg), CB_OK);
-    return law;
-}
 
 /* Richefeu 2007 eq. 6 (Lian 1998): (1 + theta/2) V^(1/3), theta in radians. */
 static double lian_reference(double theta_degrees, double volume)

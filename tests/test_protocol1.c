@@ -4,6 +4,7 @@
  * S(alpha) = alpha * sum{R_g^3 : alpha_p <= alpha}. */
 #include "capbridge.h"
 #include "check.h"
+#include "test_law.h"
 #include "test_random.h"
 
 #include <float.h>
@@ -14,22 +15,6 @@
 #include <string.h>
 
 #define PI_L 3.14159265358979323846264338327950288L
-
-/* ------------------------------------------------------------- helpers */
-
-static cb_law make_law(double theta_degrees, const char *rupture)
-{
-    cb_law law;
-    cb_message msg;
-    char text[32];
-    CHECK_STATUS(cb_law_init(&law, CB_MODEL_RICHEFEU, 0.072, 0.0), CB_OK);
-    snprintf(text, sizeof text, "%.17g", theta_degrees);
-    CHECK_STATUS(cb_law_configure(&law, "theta", text, &msg), CB_OK);
-    if (rupture) CHECK_STATUS(cb_law_configure(&law, "rupture", rupture, &msg), CB_OK);
-    CHECK_STATUS(cb_law_prepare(&law, &msg), CB_OK);
-    return law;
-}
-
 
 /* The rupture rule, written from the published formulas. */
 typedef struct rule {
@@ -489,10 +474,10 @@ static void protocol1_conservation(const cb_law *law)
 int main(int argc, char **argv)
 {
     (void)argc;
-    cb_law lian = make_law(0.0, NULL);
-    cb_law lian30 = make_law(30.0, NULL);
-    cb_law willett = make_law(0.0, "willett");
-    cb_law willett40 = make_law(40.0, "willett");
+    cb_law lian = make_law(0.0, NULL, NULL);
+    cb_law lian30 = make_law(30.0, NULL, NULL);
+    cb_law willett = make_law(0.0, "willett", NULL);
+    cb_law willett40 = make_law(40.0, "willett", NULL);
     const long double deg = PI_L / 180.0L;
     rule lian_rule = {0, 1.0L}, lian30_rule = {0, 1.0L + 15.0L * deg};
     rule willett_rule = {1, 1.0L}, willett40_rule = {1, 1.0L + 20.0L * deg};
