@@ -4,6 +4,8 @@
  *   active --(gap <= rupture distance of its volume)--> held (always held in overlap)
  *   active --(gap >  rupture distance of its volume)--> ruptured: the whole volume is
  *                                                       released, the state is zeroed
+ *   active --(cb_bridge_remove, removal.c)-->  removed: dry, marked while it overlaps
+ *   removed --(gap >= 0)-->  dry (and may form at gap 0); removed at gap < 0 stays so
  *
  * A bridge forms only at contact (Richefeu 2007 §2.2: a bridge exists from contact up to
  * the debonding distance; it does not re-form across a gap). The rupture distance is the
@@ -30,7 +32,8 @@
 
 static const cb_bridge dry_bridge = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 
-/* A stored state is one of exactly two shapes: dry (all zero) or active {V > 0, 1, with
+/* A stored state is one of exactly three shapes: dry (all zero), removed (dry but rupture
+ * CB_BRIDGE_REMOVED) or active {V > 0, 1, with
  * constants that a derivation can give: rupture > 0, contact force >= 0, radii > 0,
  * law constant >= 0 (0: the force is evaluated in full, always correct)}.
  * Anything else (e.g. a corrupted pair history) is an error, never silently repaired:
@@ -47,7 +50,8 @@ cb_status cb_bridge_check_state(const cb_bridge *b)
                 b->radius_product <= DBL_MAX && b->law_constant >= 0.0 &&
                 b->law_constant <= DBL_MAX;
     else
-        valid = b->active == 0.0 && b->volume == 0.0 && b->rupture == 0.0 &&
+        valid = b->active == 0.0 && b->volume == 0.0 &&
+                (b->rupture == 0.0 || b->rupture == CB_BRIDGE_REMOVED) &&
                 b->force_contact == 0.0 && b->radius_sum == 0.0 && b->radius_product == 0.0 &&
                 b->law_constant == 0.0;
     return valid ? CB_OK : CB_ERR_BRIDGE_STATE;
@@ -110,7 +114,7 @@ static cb_status advance(const cb_law *law, double r1, double r2, double gap,
             *released = bridge->volume;
             *next = dry_bridge;
         }
-    } else if (gap <= 0.0 && available_volume > 0.0) {
+    } else if (cb_bridge_may_form(bridge, gap) && available_volume > 0.0) {
         /* A volume the law refuses is reported now, at formation, not at the first force
          * call — and no bridge is formed. */
         cb_status status = derive(law, r1, r2, available_volume, next);
@@ -118,6 +122,7 @@ static cb_status advance(const cb_law *law, double r1, double r2, double gap,
         *change = CB_BRIDGE_FORMED;
     } else {
         *change = CB_BRIDGE_STAYS_DRY;
+        if (gap >= 0.0) *next = dry_bridge;  /* a removed pair's mark goes: the contact opened */
     }
     return CB_OK;
 }

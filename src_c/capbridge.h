@@ -417,7 +417,9 @@ int cb_periodic_too_narrow(const double width[3], const int periodic[3], double 
 typedef struct cb_bridge {
     double volume;         /* liquid in the bridge [m^3]; 0 when there is no bridge */
     double active;         /* 1.0 while the bridge exists, 0.0 otherwise (a double for history) */
-    double rupture;        /* rupture distance of this volume between these radii [m] */
+    double rupture;        /* rupture distance of this volume between these radii [m]; in a
+                            * dry state 0, or CB_BRIDGE_REMOVED while the pair of a removed
+                            * bridge (cb_bridge_remove) still overlaps */
     double force_contact;  /* the force at gap 0 [N] */
     double radius_sum;     /* r1 + r2 and r1 r2 of the radii the two above are for */
     double radius_product;
@@ -427,6 +429,9 @@ typedef struct cb_bridge {
                             * none and evaluates its force in full */
 } cb_bridge;
 #define CB_BRIDGE_DOUBLES 7
+/* The mark of a dry pair whose bridge was removed and whose contact has not opened since:
+ * it forms no bridge until its gap is >= 0 again (cb_bridge_remove). */
+#define CB_BRIDGE_REMOVED (-1.0)
 
 typedef enum cb_transition {
     CB_BRIDGE_STAYS_DRY = 0, /* no bridge before, none now */
@@ -455,8 +460,9 @@ cb_status cb_bridge_step(const cb_law *law, double r1, double r2, double gap,
 cb_status cb_bridge_force(const cb_law *law, double r1, double r2, double gap,
                           const cb_bridge *bridge, double *force);
 
-/* CB_OK when a stored state is one of the two shapes the calls above and below produce:
- * dry (all zero) or an active bridge's (volume > 0, active 1, rupture > 0, contact force
+/* CB_OK when a stored state is one of the three shapes the calls above and below produce:
+ * dry (all zero), dry and removed (all zero but rupture = CB_BRIDGE_REMOVED) or an active
+ * bridge's (volume > 0, active 1, rupture > 0, contact force
  * >= 0, radii > 0, law constant >= 0, every one finite); else CB_ERR_BRIDGE_STATE (a
  * corrupted pair history or restart file).  Every call above checks the state it is given
  * with it; an engine checks each stored state once where it enters (a restart file's pair
@@ -500,6 +506,48 @@ static inline int cb_bridge_held(const cb_law *law, double r1, double r2, double
     }
     return 0;
 }
+
+/* Dry and unmarked: a pair with nothing for cb_bridge_update to advance (an engine may skip
+ * it while it is apart). */
+static inline int cb_bridge_dry(const cb_bridge *bridge)
+{
+    return bridge->active == 0.0 && bridge->rupture == 0.0;
+}
+
+/* The pair of a removed bridge that still overlaps (cb_bridge_remove): it forms none, and
+ * Protocol 1 gives it no liquid. */
+static inline int cb_bridge_removed_in_contact(const cb_bridge *bridge, double gap)
+{
+    return bridge->active == 0.0 && bridge->rupture == CB_BRIDGE_REMOVED && gap < 0.0;
+}
+
+/* A dry pair at this gap that may form a bridge if liquid is offered: the candidates an
+ * engine counts for Protocols 2 and 3.  At gap >= 0 a removed pair's mark is gone
+ * (cb_bridge_update makes it plainly dry). */
+static inline int cb_bridge_may_form(const cb_bridge *bridge, double gap)
+{
+    return bridge->active == 0.0 && gap <= 0.0 && !cb_bridge_removed_in_contact(bridge, gap);
+}
+
+/* Removing bridges (Richefeu 2007 §3.2, fig. 7, and §4.2.2, fig. 12: samples "with two
+ * times less bonds ... obtained by removing half of the bonds", the water content kept).
+ * cb_bridge_removal_chosen: whether the bridge between atoms id1 and id2 is among the
+ * `fraction` (0..1) removed with this seed: a hash of (seed, the two ids in either order)
+ * gives a number uniform in [0, 1) (splitmix64's finaliser, Steele, Lea & Flood 2014),
+ * removed when it is below fraction.  The same pair gets the same draw on every rank, in
+ * every engine and in any order, so the removed set does not depend on the decomposition,
+ * and a larger fraction removes a superset.  CB_ERR_RANGE for a fraction outside [0, 1]
+ * (or NaN) or id1 == id2; *chosen is then untouched.
+ * cb_bridge_remove: the bridge is removed at this gap; its whole volume is released (the
+ * engine hands it on as the liquid of a broken bridge under its protocol) and the pair
+ * becomes dry, marked CB_BRIDGE_REMOVED while it overlaps (gap < 0), so that it does not
+ * form a bridge again at the same contact: in a dense packing most bridges are in contact,
+ * and every one would form again at once from the liquid it just released.  The mark goes
+ * at the first update with gap >= 0: the contact has opened, and a new contact may form a
+ * bridge as any other.  A dry state is left as it is (released 0). */
+cb_status cb_bridge_removal_chosen(double fraction, unsigned long long seed, long long id1,
+                                   long long id2, int *chosen);
+cb_status cb_bridge_remove(double gap, cb_bridge *bridge, double *released_volume);
 
 /* Set the bridge's volume (a liquid protocol moves liquid into or out of it) and derive
  * its constants for these radii and this law: volume 0 makes it dry.  Called with the

@@ -85,6 +85,7 @@ void FixCapillaryLiquid::offer_liquid()
 {
   update_bridges();
   exchange_liquid();
+  if (removing) report_removal();
 }
 
 /* ----------------------------------------------------------------------
@@ -150,11 +151,15 @@ void FixCapillaryLiquid::update_bridges()
       const double r = sqrt(rsq);
       const double gap = r - radsum;
 
-      if (bridge->active != 0.0) advance_and_release(i, j, rsq, gap, bridge);
+      if (bridge->active != 0.0 && removing && removal_chosen(i, j))
+        remove_and_release(i, j, gap, bridge);
+      else if (!cb_bridge_dry(bridge))
+        advance_and_release(i, j, rsq, gap, bridge);
       if (bridge->active != 0.0) {
         if (protocol3) receive_at(i, j, delz, r);
-      } else if (gap <= 0.0 && CapillaryBridges::wet(bridges->type_pair(type[i], type[j]), mask,
-                                                     groupbit, i, j)) {
+      } else if (cb_bridge_may_form(bridge, gap) &&
+                 CapillaryBridges::wet(bridges->type_pair(type[i], type[j]), mask, groupbit, i,
+                                       j)) {
         candidates[i] += 1.0;
         if (newton_pair || j < nlocal) candidates[j] += 1.0;
       }
@@ -182,7 +187,7 @@ void FixCapillaryLiquid::advance_and_release(int i, int j, double rsq, double ga
                     bridge->volume, gap);
   if (transition != CB_BRIDGE_RUPTURED) {
     vol = 0.0;
-    if (CapillaryBridges::beyond_reach(rsq, gap, tp)) {
+    if (transition == CB_BRIDGE_HELD && CapillaryBridges::beyond_reach(rsq, gap, tp)) {
       // held beyond the reach (a volume above the one the reach was built for, a grown
       // sphere): ruptured here, before the pair leaves the neighbor list with its liquid
       vol = bridge->volume;
@@ -192,13 +197,62 @@ void FixCapillaryLiquid::advance_and_release(int i, int j, double rsq, double ga
   }
   if (vol > 0.0) {
     if (counted) bridges->n_ruptured += 1.0;
-    double share_i = 0.0, share_j = 0.0;
-    status = cb_protocol2_release(vol, radius[i], radius[j], &share_i, &share_j);
-    bridges->check_cb(error, status, "liquid release", itype, jtype, radius[i], radius[j], vol,
-                      gap);
-    released[i] += share_i;
-    if (newton_pair || j < nlocal) released[j] += share_j;
+    release(i, j, vol, gap);
   }
+}
+
+/* ----------------------------------------------------------------------
+   phase 1, a bridge's liquid split between its two atoms (released[]): cb_protocol2_release,
+   the split in proportion to the radii, exact
+------------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::release(int i, int j, double volume, double gap)
+{
+  double *radius = atom->radius;
+  double share_i = 0.0, share_j = 0.0;
+  const int status = cb_protocol2_release(volume, radius[i], radius[j], &share_i, &share_j);
+  bridges->check_cb(error, status, "liquid release", atom->type[i], atom->type[j], radius[i],
+                    radius[j], volume, gap);
+  released[i] += share_i;
+  if (force->newton_pair || j < atom->nlocal) released[j] += share_j;
+}
+
+/* ----------------------------------------------------------------------
+   keyword remove (the first force evaluation after the liquid starts): is the bridge of
+   i and j among the removed fraction (cb_bridge_removal_chosen: a draw from the seed and
+   the two atom IDs, the same on every rank and for both copies of a newton-off pair)
+------------------------------------------------------------------------- */
+
+int FixCapillaryLiquid::removal_chosen(int i, int j)
+{
+  int chosen = 0;
+  const int status = cb_bridge_removal_chosen(remove_fraction, (unsigned long long) remove_seed,
+                                              (long long) atom->tag[i],
+                                              (long long) atom->tag[j], &chosen);
+  if (status != CB_OK)
+    error->one(FLERR, "fix capillary/liquid: remove {} (seed {}) for atoms {} and {}: {}",
+               remove_fraction, remove_seed, atom->tag[i], atom->tag[j],
+               cb_status_message((cb_status) status));
+  return chosen;
+}
+
+/* ----------------------------------------------------------------------
+   keyword remove, one bridge: removed (cb_bridge_remove: dry, and no bridge again while the
+   contact lasts) and its liquid released as a broken bridge's (Protocol 2: to its two
+   atoms; Protocol 3: their receivers, exchange_liquid)
+------------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::remove_and_release(int i, int j, double gap, cb_bridge *bridge)
+{
+  double vol = 0.0;
+  const int status = cb_bridge_remove(gap, bridge, &vol);
+  bridges->check_cb(error, status, "bridge removal", atom->type[i], atom->type[j],
+                    atom->radius[i], atom->radius[j], bridge->volume, gap);
+  if (CapillaryBridges::counted_once(i, j, atom->nlocal, force->newton_pair, atom->tag)) {
+    removed_count += 1.0;
+    removed_liquid += vol;
+  }
+  release(i, j, vol, gap);
 }
 
 /* ----------------------------------------------------------------------
@@ -410,6 +464,7 @@ void FixCapillaryLiquid::gather_candidates(Protocol1Pairs &mine)
   int *type = atom->type;
   tagint *tag = atom->tag;
   NeighList *list = pair->list;
+  double **firstvalue = bridges->fix_history->firstvalue;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
@@ -421,10 +476,15 @@ void FixCapillaryLiquid::gather_candidates(Protocol1Pairs &mine)
       const double delz = x[i][2] - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
       if (rsq >= tp.cutsq) continue;
+      const double gap = sqrt(rsq) - (radius[i] + radius[j]);
+      // a removed bridge's pair gets no liquid while its contact lasts (keyword remove)
+      const cb_bridge *bridge =
+          CapillaryBridges::bridge_of(&firstvalue[i][CapillaryBridges::SIZE_BRIDGE * jj]);
+      if (cb_bridge_removed_in_contact(bridge, gap)) continue;
       mine.law = tp.law;
       mine.geometry.push_back(radius[i]);
       mine.geometry.push_back(radius[j]);
-      mine.geometry.push_back(sqrt(rsq) - (radius[i] + radius[j]));
+      mine.geometry.push_back(gap);
       mine.keys.push_back(MIN(tag[i], tag[j]));
       mine.keys.push_back(MAX(tag[i], tag[j]));
       mine.where.emplace_back(i, jj);

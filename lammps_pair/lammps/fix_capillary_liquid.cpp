@@ -70,8 +70,15 @@ FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
   fixed_volume = -1.0;
   every = 0;
   start_free = 0;
+  remove_fraction = 0.0;
+  remove_seed = 0;
+  removing = 0;
+  removed_count = removed_liquid = 0.0;
   water = liquid_density = liquid_given = vmax_given = -1.0;
   parse_keywords(parse_fixed_volume(narg, arg), narg, arg);
+  if (remove_fraction > 0.0 && start_free)
+    error->all(FLERR, "fix capillary/liquid {}: keyword 'remove' needs 'start bridges' (with "
+               "'start free' no bridge exists when the liquid starts)", mode_name());
   if (mode != LIQUID_FIXED && (water < 0.0) == (liquid_given < 0.0))
     error->all(FLERR, "fix capillary/liquid {}: give the liquid once: 'water W RHO' (mass "
                "fraction, liquid density) or 'liquid V' (volume units)", mode_name());
@@ -201,6 +208,27 @@ void FixCapillaryLiquid::parse_keywords(int iarg, int narg, char **arg)
       else
         error->all(FLERR, "fix capillary/liquid: start '{}': allowed bridges, free", arg[iarg + 1]);
       iarg += 2;
+    } else if (strcmp(key, "remove") == 0) {
+      // Richefeu 2007 fig. 7 and fig. 12: "two times less bonds ... obtained by removing half
+      // of the bonds", the water content kept; Protocol 1 would give every eligible pair its
+      // bridge back at its next distribution, and fixed volumes keep no water content
+      if (mode != LIQUID_PROTOCOL2 && mode != LIQUID_PROTOCOL3)
+        error->all(FLERR, "fix capillary/liquid {}: keyword 'remove' applies to protocol2 and "
+                   "protocol3 only ({})", mode_name(),
+                   mode == LIQUID_PROTOCOL1
+                       ? "Protocol 1 gives every eligible pair a bridge again at its next "
+                         "distribution"
+                       : "fixed volumes keep no water content for the removed bridges");
+      need(2, key);
+      remove_fraction = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      remove_seed = utils::bnumeric(FLERR, arg[iarg + 2], false, lmp);
+      if (!(remove_fraction > 0.0 && remove_fraction <= 1.0))
+        error->all(FLERR, "fix capillary/liquid: remove {}: the share of the bridges removed "
+                   "must be > 0 and <= 1 (0.5: half of them)", arg[iarg + 1]);
+      if (remove_seed < 1)
+        error->all(FLERR, "fix capillary/liquid: remove seed {}: must be a whole number >= 1",
+                   arg[iarg + 2]);
+      iarg += 3;
     } else if (strcmp(key, "vmax") == 0) {
       only_protocols(key);
       need(1, key);
@@ -211,7 +239,7 @@ void FixCapillaryLiquid::parse_keywords(int iarg, int narg, char **arg)
       iarg += 2;
     } else
       error->all(FLERR, "fix capillary/liquid: unknown keyword '{}': allowed water, liquid, "
-                 "every, start, vmax", key);
+                 "every, start, remove, vmax", key);
   }
 }
 
@@ -323,6 +351,8 @@ void FixCapillaryLiquid::setup_pre_force(int /*vflag*/)
   if (!started) {
     start_liquid();
     started = 1;
+    // keyword remove: in this run's first force evaluation, phase 1 (update_bridges)
+    removing = remove_fraction > 0.0;
     return;
   }
   if (total_at_run_end >= 0.0 && free_liquid) {
@@ -395,6 +425,27 @@ void FixCapillaryLiquid::start_liquid()
     for (int i = 0; i < atom->nlocal; i++)
       if (atom->mask[i] & groupbit) free_liquid[i] = MAX(rest, 0.0) * (atom->rmass[i] / mass);
   pool = 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   keyword remove, after the force evaluation that removed the bridges (collective): how
+   many, of how many, and their liquid, which the protocol handed on as a broken bridge's
+------------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::report_removal()
+{
+  removing = 0;
+  double local[2] = {removed_count, removed_liquid}, global[2];
+  MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, world);
+  removed_count = removed_liquid = 0.0;
+  census();
+  if (comm->me == 0)
+    utils::logmesg(lmp, "fix capillary/liquid {}: removed {:.0f} of {:.0f} bridges (remove {} "
+                   "seed {}: {:.4f} of them), holding {:.17g} of the liquid {:.17g}, handed on as "
+                   "the liquid of broken bridges\n", mode_name(), global[0],
+                   global[0] + values[0], remove_fraction, remove_seed,
+                   global[0] > 0.0 ? global[0] / (global[0] + values[0]) : 0.0, global[1],
+                   total_liquid);
 }
 
 /* ----------------------------------------------------------------------
@@ -510,6 +561,10 @@ void FixCapillaryLiquid::restart(char *buf)
   alpha = list[4];
   started = (int) list[5];
   last_distribution = (bigint) list[6];
+  if (started && remove_fraction > 0.0 && comm->me == 0)
+    error->warning(FLERR, "fix capillary/liquid {}: keyword 'remove' acts when the liquid "
+                   "starts, and the restart file's liquid has started: no bridge is removed",
+                   mode_name());
 }
 
 /* ----------------------------------------------------------------------

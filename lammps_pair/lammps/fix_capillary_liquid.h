@@ -84,6 +84,10 @@ class FixCapillaryLiquid : public Fix {
   double *free_liquid;           // Protocols 2, 3: free liquid per atom [m^3]; else nullptr
   int every;               // Protocol 1: every N steps; 0 = at every re-neighboring
   int start_free;          // Protocols 2, 3: start as free liquid (1) or as bridges (0)
+  double remove_fraction;  // keyword remove: the share of the bridges removed when the liquid
+  bigint remove_seed;      // starts (0: none), and the seed of the draw
+  int removing;            // 1 in the force evaluation that removes them
+  double removed_count, removed_liquid;    // this rank's removals in it (pairs counted once)
   double water, liquid_density, liquid_given, vmax_given;
 
   // persistent state (global restart)
@@ -119,6 +123,10 @@ class FixCapillaryLiquid : public Fix {
   void destroy_scratch();
   void update_bridges();
   void advance_and_release(int i, int j, double rsq, double gap, cb_bridge *bridge);
+  void release(int i, int j, double volume, double gap);
+  int removal_chosen(int i, int j);
+  void remove_and_release(int i, int j, double gap, cb_bridge *bridge);
+  void report_removal();
   void receive_at(int i, int j, double delz, double r);
   void exchange_liquid();
   void count_bridges(double *out);

@@ -383,7 +383,7 @@ double PairGranCapillary::bridge_capillary(int i, int j, const PairGeometry &g,
   // rupture distance (>= 0), so the held contact path tests the cutoff alone)
   if (!(g.rsq < tp.cutsq && cb_bridge_held(tp.law, g.radi, g.radj, g.gap, bridge, &capillary) &&
         (g.gap <= 0.0 || !cb_bridge_beyond_reach(g.gap, tp.design_rupture))) &&
-      (bridge->active != 0.0 || (tp.formation_volume > 0.0 && wet_pair(i, j, tp))))
+      (!cb_bridge_dry(bridge) || (tp.formation_volume > 0.0 && wet_pair(i, j, tp))))
     capillary = advance_bridge(i, j, g.rsq, g.gap, tp, bridge);
   return capillary;
 }
@@ -408,7 +408,7 @@ double PairGranCapillary::protocol_bridge(int i, int j, double gap, const TypePa
   const tagint *best_partner = fix_liquid->best_partner;
   double capillary = 0.0;
   if (bridge->active == 0.0) {
-    if (gap <= 0.0 && wet_pair(i, j, tp)) {
+    if (cb_bridge_may_form(bridge, gap) && wet_pair(i, j, tp)) {
       double offer_i = offer[i], offer_j = offer[j], available = 0.0;
       int status = cb_protocol2_take(&offer_i, &offer_j, &available);
       check_cb(error, status, "liquid take", itype, jtype, radius[i], radius[j], available, gap);
@@ -493,11 +493,12 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
   double *shear = &history[HIST_SHEAR];
 
   // The flag (LAMMPS's neighbor-history "touch") is 1 while the pair touches or holds a
-  // bridge, and a pair flagged 0 has an all-zero history: cleared here with the flag, by
+  // bridge (or a removed bridge's mark, cb_bridge_dry), and a pair flagged 0 has an all-zero
+  // history: cleared here with the flag, by
   // Protocol 1 the same way, and by FixNeighHistory for every pair it does not carry over
   // at re-neighboring.  The pair loops rely on it to skip flagged-0 pairs that are apart.
   const int in_contact = tp.contact_on && g.gap < 0.0;
-  touch = (in_contact || (BRIDGES && bridge->active != 0.0)) ? 1 : 0;
+  touch = (in_contact || (BRIDGES && !cb_bridge_dry(bridge))) ? 1 : 0;
   if (!in_contact) {
     shear[0] = shear[1] = shear[2] = 0.0;
     if (!BRIDGES || capillary == 0.0) return;

@@ -64,6 +64,21 @@ expect fix_no_liquid "fix capillary/liquid protocol1: give the liquid once" \
     gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728" protocol1 "every 10"
 expect fix_volume_conflict "volume 1e-12 conflicts with fix capillary/liquid protocol2" \
     gran/capillary "$GOOD" protocol2 "water 0.01 1000"
+W="100 40 0.3 0.4 law richefeu gamma 0.0728"
+expect fix_remove_protocol1 "keyword 'remove' applies to protocol2 and protocol3 only \(Protocol 1 gives every eligible pair a bridge again" \
+    gran/capillary "$W" protocol1 "water 0.01 1000 remove 0.5 7"
+expect fix_remove_fixed "keyword 'remove' applies to protocol2 and protocol3 only \(fixed volumes keep no water content" \
+    gran/capillary "$W" fixed "1e-12 remove 0.5 7"
+expect fix_remove_start_free "keyword 'remove' needs 'start bridges'" \
+    gran/capillary "$W" protocol2 "water 0.01 1000 remove 0.5 7 start free"
+expect fix_remove_fraction "remove 1.5: the share of the bridges removed must be > 0 and <= 1" \
+    gran/capillary "$W" protocol3 "water 0.01 1000 remove 1.5 7"
+expect fix_remove_zero "remove 0: the share of the bridges removed must be > 0 and <= 1" \
+    gran/capillary "$W" protocol2 "water 0.01 1000 remove 0 7"
+expect fix_remove_seed "remove seed 0: must be a whole number >= 1" \
+    gran/capillary "$W" protocol2 "water 0.01 1000 remove 0.5 0"
+expect fix_remove_values "keyword 'remove' needs 2 values" \
+    gran/capillary "$W" protocol2 "water 0.01 1000 remove 0.5"
 
 # two atoms at the same position: an error naming them before any force is applied (no NaN
 # pressure in thermo output first)

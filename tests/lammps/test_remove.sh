@@ -1,0 +1,71 @@
+#!/bin/sh
+# Keyword remove of fix capillary/liquid (Richefeu 2007 fig. 7, fig. 12: half of the bonds
+# removed, the water content kept), on the wet granular packing (in.granular), Protocols 2
+# and 3, on 1, 2 and 3 ranks with newton on and off:
+#  - the run without remove has M bridges at step 0; with remove 0.5 the fix reports N of
+#    them removed, N within 4 standard deviations of M/2 (a binomial draw), and M - N
+#    bridges remain at step 0; the same N and the same bridges on every decomposition;
+#  - the removed liquid is handed on by the protocol: Protocol 2, every drop of it is free
+#    liquid at step 0 (to 1e-12 relative); Protocol 3, more liquid stays in bridges than
+#    the remaining bridges held before (the receivers grew); the total is conserved to
+#    1e-12 at every output;
+#  - a removed pair in contact forms no bridge again while its contact lasts: the
+#    formations of the first 10 steps are few (< N / 20), where every removed pair in
+#    contact (most of the N) would form again at once without its mark.
+. "$(dirname "$0")/lib.sh" "$@"
+
+scene_data "$TMP/scene.data" 10 10 20 12345 0.3
+
+# rows LOG: step bridges bridged free total formed ruptured change (thermo columns 1 3 5-10)
+rows() { thermo "$1" | awk '{ print $1, $3, $5, $6, $7, $8, $9, $10 }'; }
+
+run() {  # run LOG NP NEWTON MODE LIQUID
+    lmp "$2" "$1" -in "$DECKS/in.granular" -var DECKS "$DECKS" -var data "$TMP/scene.data" \
+        -var newton "$3" -var mode "$4" -var liquid "$5" -var peratom 1 -var nsteps 100 \
+        -var every 10 -var out "$TMP/out" >/dev/null 2>&1 ||
+        { fail "$(basename "$1"): LAMMPS failed: $(grep -h -m1 ERROR "$1" "$1.screen")"; return 1; }
+}
+
+for mode in protocol2 protocol3; do
+    run "$TMP/$mode-all.log" 1 on $mode "water 0.01 1000" || continue
+    all=$(rows "$TMP/$mode-all.log" | awk 'NR == 1 { print $2, $3 }')
+    reference=""
+    for newton in on off; do
+        for np in 1 2 3; do
+            log="$TMP/$mode-np$np-newton$newton.log"
+            run "$log" $np $newton $mode "water 0.01 1000 remove 0.5 7723" || continue
+            checks=$((checks + 1))
+            removed=$(grep -h -m1 "removed .* of .* bridges" "$log" | sed 's/.*removed \([0-9]*\) of \([0-9]*\) bridges.*holding \([^ ]*\) of.*/\1 \2 \3/')
+            [ -n "$removed" ] || { fail "$mode np $np newton $newton: no removal message"; continue; }
+            rows "$log" | awk -v label="$mode np $np newton $newton" -v all="$all" \
+                -v removed="$removed" -v mode=$mode '
+            function abs(x) { return x < 0 ? -x : x }
+            BEGIN { split(all, a, " "); split(removed, r, " "); m = a[1]; n = r[1] }
+            {
+                if (abs($8) > 1e-12) { printf "%s step %s: total liquid changed by %.3g\n", label, $1, $8; bad++ }
+                if (NR == 1) { b0 = $2; f0 = $6; bridged0 = $3; free0 = $4 }
+                if (NR == 2) early = $6 - f0
+            }
+            END {
+                if (r[2] != m) { printf "%s: the fix saw %s bridges, the run without remove %s\n", label, r[2], m; bad++ }
+                if (abs(n - m / 2) > 4 * sqrt(m / 4)) { printf "%s: removed %s of %s\n", label, n, m; bad++ }
+                if (b0 != m - n) { printf "%s: %s bridges at step 0, expected %s - %s\n", label, b0, m, n; bad++ }
+                if (mode == "protocol2" && abs(free0 - r[3]) > 1e-12 * r[3]) { printf "%s: free liquid %.17g at step 0, removed %.17g\n", label, free0, r[3]; bad++ }
+                if (mode == "protocol3" && !(bridged0 > a[2] - r[3] * (1 + 1e-12))) { printf "%s: %.17g in bridges, no receiver grew (%.17g - %.17g)\n", label, bridged0, a[2], r[3]; bad++ }
+                if (!(early < n / 20)) { printf "%s: %s bridges formed in the first 10 steps after removing %s\n", label, early, n; bad++ }
+                printf "%s: removed %s of %s bridges, %s formed in the next 10 steps, liquid kept\n", label, n, m, early
+                exit bad > 0 }' >"$TMP/why" || { fail "$(head -5 "$TMP/why")"; continue; }
+            cat "$TMP/why"
+            rows "$log" | awk '{ print $1, $2 }' >"$TMP/counts"
+            if [ -z "$reference" ]; then
+                reference=$log
+                cp "$TMP/counts" "$TMP/reference.counts"
+            else
+                checks=$((checks + 1))
+                cmp -s "$TMP/counts" "$TMP/reference.counts" ||
+                    fail "$mode np $np newton $newton: bridge counts differ from $(basename "$reference")"
+            fi
+        done
+    done
+done
+finish
