@@ -81,12 +81,15 @@ close_rel() {
 #            [SHIFT: the lattice moved by SHIFT spacings along x, y, z and wrapped into the
 #            box, default 0; 0.5 puts lattice planes on the box faces and on the faces of
 #            evenly split subdomains, which atoms then cross all the time]
+#            [SPACING: the lattice spacing [m], default 1.12e-3 (no two spheres touch);
+#            0.95e-3 makes most neighbours overlap]
 scene_data() {
-    awk -v nx="$2" -v ny="$3" -v nz="$4" -v seed="$5" -v vmax="${6:-0.1}" -v shift="${7:-0}" '
+    awk -v nx="$2" -v ny="$3" -v nz="$4" -v seed="$5" -v vmax="${6:-0.1}" -v shift="${7:-0}" \
+        -v a="${8:-1.12e-3}" '
     function wrap(x, l) { return x >= l ? x - l : (x < 0 ? x + l : x) }
     function rnd() { seed = (16807 * seed) % 2147483647; return seed / 2147483647 }
     BEGIN {
-        a = 1.12e-3; n = nx * ny * nz
+        n = nx * ny * nz
         printf "capbridge granular scene: %d x %d x %d spheres\n\n", nx, ny, nz
         printf "%d atoms\n1 atom types\n\n", n
         printf "0 %.17g xlo xhi\n0 %.17g ylo yhi\n0 %.17g zlo zhi\n\n", nx * a, ny * a, nz * a

@@ -1,7 +1,7 @@
 #!/bin/sh
 # Keyword remove of fix capillary/liquid (Richefeu 2007 fig. 7, fig. 12: half of the bonds
-# removed, the water content kept), on the wet granular packing (in.granular), Protocols 2
-# and 3, on 1, 2 and 3 ranks with newton on and off:
+# removed, the water content kept), on the wet granular packing (in.granular, its lattice
+# closer than the diameters: most pairs in contact), Protocols 2 and 3, on 1, 2 and 3 ranks with newton on and off:
 #  - the run without remove has M bridges at step 0; with remove 0.5 the fix reports N of
 #    them removed, N within 4 standard deviations of M/2 (a binomial draw), and M - N
 #    bridges remain at step 0; the same N and the same bridges on every decomposition;
@@ -9,12 +9,14 @@
 #    liquid at step 0 (to 1e-12 relative); Protocol 3, more liquid stays in bridges than
 #    the remaining bridges held before (the receivers grew); the total is conserved to
 #    1e-12 at every output;
-#  - a removed pair in contact forms no bridge again while its contact lasts: the
-#    formations of the first 10 steps are few (< N / 20), where every removed pair in
-#    contact (most of the N) would form again at once without its mark.
+#  - a removed pair in contact forms no bridge again while its contact lasts: M - N
+#    bridges at step 0 and few formations in the next 10 steps (< N / 5: new contacts as
+#    the packing relaxes).  Without the mark (cb_bridge_remove made to leave none) 2557
+#    of the 2999 removed bridges formed again at step 0 (5558 bridges, not 3001).
 . "$(dirname "$0")/lib.sh" "$@"
 
-scene_data "$TMP/scene.data" 10 10 20 12345 0.3
+# a lattice closer than the diameters, at rest: most bridges are in contact at the start
+scene_data "$TMP/scene.data" 10 10 20 12345 0 0 0.95e-3
 
 # rows LOG: step bridges bridged free total formed ruptured change (thermo columns 1 3 5-10)
 rows() { thermo "$1" | awk '{ print $1, $3, $5, $6, $7, $8, $9, $10 }'; }
@@ -52,7 +54,7 @@ for mode in protocol2 protocol3; do
                 if (b0 != m - n) { printf "%s: %s bridges at step 0, expected %s - %s\n", label, b0, m, n; bad++ }
                 if (mode == "protocol2" && abs(free0 - r[3]) > 1e-12 * r[3]) { printf "%s: free liquid %.17g at step 0, removed %.17g\n", label, free0, r[3]; bad++ }
                 if (mode == "protocol3" && !(bridged0 > a[2] - r[3] * (1 + 1e-12))) { printf "%s: %.17g in bridges, no receiver grew (%.17g - %.17g)\n", label, bridged0, a[2], r[3]; bad++ }
-                if (!(early < n / 20)) { printf "%s: %s bridges formed in the first 10 steps after removing %s\n", label, early, n; bad++ }
+                if (!(early < n / 5)) { printf "%s: %s bridges formed in the first 10 steps after removing %s\n", label, early, n; bad++ }
                 printf "%s: removed %s of %s bridges, %s formed in the next 10 steps, liquid kept\n", label, n, m, early
                 exit bad > 0 }' >"$TMP/why" || { fail "$(head -5 "$TMP/why")"; continue; }
             cat "$TMP/why"
