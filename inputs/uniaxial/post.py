@@ -5,13 +5,22 @@ Usage: post.py OUTDIR RUNDIR [RUNDIR ...]
 Each RUNDIR is the output directory of one run of in.lammps or in.liggghts (uniaxial.txt,
 summary.txt, optionally start.dump/end.dump). Writes into OUTDIR:
   curves.csv     run, dh/<D>, sigma [Pa] of every run
-  strength.csv   one line per run: engine, N, w [%], protocol, half, dry, sigma_rupt [Pa], inertial number
+  strength.csv   one line per run: engine, N, w [%], protocol, half, dry, sigma_rupt [Pa], inertial
+                 number, the bridge coordination z at the start of the compression, and the
+                 settlement after the mould's removal (below)
+  strength-mean.csv  one line per sample (engine, N, w, protocol, half, dry; the packings, i.e.
+                 seeds, pooled): n, the means and their standard errors
   stress.png     sigma(dh/<D>) of every run (Richefeu 2007 fig. 10)
   strength.png   sigma_rupt(w) per protocol, with the dry value (Richefeu 2007 fig. 12)
   snapshot.png   vertical slice of the first wet run coloured by displacement (fig. 11), if dumps exist
 and prints the strength table.
 sigma_rupt is the peak of sigma after a moving average over 5 outputs (1/40 of the travel),
 which keeps single-contact spikes of small samples out of the strength.
+The settlement (Richefeu 2007 4.2.1: "only a slight settlement of about 0.1 mm due to gravity"
+after the cylinder is removed) is given two ways: the drop of the sample's top (the highest grain
+touching another, Hseal - Hrelax), which one grain can set, and twice the drop of the centre of
+mass (zcm_seal - zcm_relax), the top's drop for a uniform vertical strain of the column, which all
+the grains set.
 The water content w is in percent of the grains' mass (summary.txt: w_percent, as the decks
 take it); a summary of the decks before December 2026 gives w as a mass fraction (key w) and
 is refused, not read a hundred times too small.
@@ -37,6 +46,16 @@ PAPER_ESTIMATE = 2 * 150.0 * np.tan(np.radians(45 + 25 / 2))
 
 def fail(msg):
     sys.exit("post.py: " + msg)
+
+
+def mean_and_error(values):
+    """The mean and its standard error (sample standard deviation / sqrt(n); NaN for n < 2)."""
+    n = len(values)
+    mean = sum(values) / n
+    if n < 2:
+        return mean, float("nan")
+    sd = np.sqrt(sum((v - mean) ** 2 for v in values) / (n - 1))
+    return mean, sd / np.sqrt(n)
 
 
 def read_summary(run):
@@ -137,6 +156,23 @@ def snapshot(run, out_png, dmean):
     plt.close(fig)
 
 
+def pooled(rows):
+    """The runs of one sample (engine, N, w, protocol, half, dry) over their packings: n, the
+    mean and the standard error of sigma_rupt, z at the start and the two settlements."""
+    groups = {}
+    for r in rows:
+        groups.setdefault((r["engine"], r["N"], r["label"]), []).append(r)
+    out = []
+    for (engine, n_grains, sample), runs in sorted(groups.items()):
+        m = dict(engine=engine, N=n_grains, sample=sample, n=len(runs))
+        for key, se in (("sigma_rupt_Pa", "sigma_rupt_se"), ("z_start", "z_start_se"),
+                        ("settlement_top_mm", "settlement_top_se"),
+                        ("settlement_2cm_mm", "settlement_2cm_se")):
+            m[key], m[se] = mean_and_error([float(r[key]) for r in runs])
+        out.append(m)
+    return out
+
+
 def main(argv):
     if len(argv) < 3:
         fail("usage: post.py OUTDIR RUNDIR [RUNDIR ...]")
@@ -157,11 +193,17 @@ def main(argv):
             # inertial number at the peak: (vwall/H) <D> sqrt(rho/sigma_rupt)
             inertial = (vwall / hseal) * dmean * np.sqrt(RHO / peak) if peak > 0 else float("inf")
             drift = float(np.max(np.abs(data[:, 6]))) if data.shape[1] > 6 else float("nan")
+            top_mm = 1e3 * (hseal - float(s["Hrelax"])) if "Hrelax" in s else float("nan")
+            cm_mm = (2e3 * (float(s["zcm_seal"]) - float(s["zcm_relax"]))
+                     if "zcm_relax" in s else float("nan"))
             rows.append(dict(run=name, engine=s.get("engine", "lammps"), N=s["N"],
                              w_percent=s["w_percent"], protocol=s.get("protocol", ""),
                              half=s.get("half", "no"), dry=s["dry"],
                              sigma_rupt_Pa=f"{peak:.4g}", inertial=f"{inertial:.3g}",
-                             vwall=s["vwall"], liquid_drift=f"{drift:.3g}", label=label(s)))
+                             vwall=s["vwall"], liquid_drift=f"{drift:.3g}", label=label(s),
+                             z_start=f"{data[0, 5]:.4g}", seed=s.get("seed", ""),
+                             settlement_top_mm=f"{top_mm:.4g}",
+                             settlement_2cm_mm=f"{cm_mm:.4g}"))
             ax.plot(data[:, 2], data[:, 3], label=f"{label(s)} ({s.get('engine', 'lammps')}, N={s['N']})")
     ax.set_xlabel("δh / <D>")
     ax.set_ylabel("σ [Pa]")
@@ -171,12 +213,18 @@ def main(argv):
     fig.savefig(os.path.join(outdir, "stress.png"), dpi=120)
     plt.close(fig)
 
-    keys = ["run", "engine", "N", "w_percent", "protocol", "half", "dry", "sigma_rupt_Pa", "inertial",
-            "vwall", "liquid_drift"]
+    keys = ["run", "engine", "N", "w_percent", "protocol", "half", "dry", "seed", "sigma_rupt_Pa",
+            "inertial", "vwall", "liquid_drift", "z_start", "settlement_top_mm",
+            "settlement_2cm_mm"]
     with open(os.path.join(outdir, "strength.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=keys, extrasaction="ignore")
         w.writeheader()
         w.writerows(rows)
+    means = pooled(rows)
+    with open(os.path.join(outdir, "strength-mean.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(means[0].keys()))
+        w.writeheader()
+        w.writerows(means)
 
     fig, ax = plt.subplots(figsize=(5, 4))
     groups = {}
@@ -206,6 +254,14 @@ def main(argv):
     print(f"{'engine':<9} {'run':<26} {'N':>5} {'sample':<30} {'sigma_rupt [Pa]':>15} {'inertial I':>10}")
     for r in rows:
         print(f"{r['engine']:<9} {r['run']:<26} {r['N']:>5} {r['label']:<30} {r['sigma_rupt_Pa']:>15} {r['inertial']:>10}")
+    print("\n| engine | N | sample | packings | sigma_rupt [Pa] | z at the start | settlement: top, "
+          "2 x centre of mass [mm] |")
+    print("|---|---|---|---|---|---|---|")
+    for m in means:
+        print(f"| {m['engine']} | {m['N']} | {m['sample']} | {m['n']} | {m['sigma_rupt_Pa']:.4g} ± "
+              f"{m['sigma_rupt_se']:.2g} | {m['z_start']:.3g} ± {m['z_start_se']:.2g} | "
+              f"{m['settlement_top_mm']:.3f} ± {m['settlement_top_se']:.2g}, "
+              f"{m['settlement_2cm_mm']:.3f} ± {m['settlement_2cm_se']:.2g} |")
     print(f"paper scale (Mohr-Coulomb from Richefeu 2007 Table I, 1 mm glass beads: c = 150 Pa, "
           f"25 deg): sigma_rupt ~ {PAPER_ESTIMATE:.0f} Pa")
 

@@ -14,18 +14,9 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from post import read_curve, read_summary, strength  # noqa: E402  (the page's definitions)
+from post import mean_and_error, read_curve, read_summary, strength  # noqa: E402  (the page's definitions)
 
 DEFAULT_SPEED = 0.01   # m/s, the default size's vwall (in.lammps)
-
-
-def mean_and_error(values):
-    n = len(values)
-    mean = sum(values) / n
-    if n < 2:
-        return mean, float("nan")
-    sd = math.sqrt(sum((v - mean) ** 2 for v in values) / (n - 1))
-    return mean, sd / math.sqrt(n)
 
 
 def main(argv):
