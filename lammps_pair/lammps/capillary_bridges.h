@@ -32,7 +32,8 @@ struct CapillaryBridges {
   //   [0..2] tangential (shear) displacement, negated for the partner;
   //   [3..9] the pair's cb_bridge, copied: volume [m^3], active (1.0 / 0.0), and the
   //          constants the core derives from them (rupture distance, force at contact, the
-  //          radii they are for, richefeu's 1/lambda).
+  //          radii they are for, richefeu's 1/lambda); a dry pair's rupture place holds
+  //          CB_BRIDGE_REMOVED after fix capillary/liquid remove, while its contact lasts.
   // A style whose first run cannot hold a bridge keeps the contact layout, [0..2] alone
   // (SIZE_CONTACT); the first run that can hold one widens it (widen_history).
   enum { HIST_SHEAR = 0, HIST_BRIDGE = 3, SIZE_CONTACT = 3, SIZE_BRIDGE = 3 + CB_BRIDGE_DOUBLES };
