@@ -43,16 +43,18 @@
 
 namespace capbridge_liggghts {
 
-/* A per-atom scalar of the model (fix property/atom NAME, default 0, not in restart files),
- * found or created; `comm_ghost` "yes" sends it to ghost atoms. */
+/* A per-atom scalar of the model (fix property/atom NAME, default 0), found or created;
+ * `comm_ghost` "yes" sends it to ghost atoms, `restart` "yes" writes it to restart files
+ * (read back into the fix of the same name the model makes after read_restart). */
 inline LAMMPS_NS::FixPropertyAtom *internal_fix(LAMMPS_NS::Modify *modify, const char *name,
-                                                const char *comm_ghost)
+                                                const char *comm_ghost,
+                                                const char *restart = "no")
 {
     LAMMPS_NS::Fix *fix = modify->find_fix_property(name, "property/atom", "scalar", 0, 0,
                                                     "cohesion model capillary", false);
     if (!fix) {
         const char *args[9] = {name, "all", "property/atom", name, "scalar",
-                               "no", comm_ghost, "no", "0."};
+                               restart, comm_ghost, "no", "0."};
         modify->add_fix(9, const_cast<char **>(args));
         fix = modify->find_fix_property(name, "property/atom", "scalar", 0, 0,
                                         "cohesion model capillary");

@@ -9,7 +9,8 @@
  * solution is the core's cb_protocol1_distribute; this file gathers the pairs and scatters
  * the volumes, at the start of a pass, before LIGGGHTS's pair loop reads the bridges:
  *   - each rank takes from the pair's neighbor list every pair LIGGGHTS visits (r^2 <
- *     contact_distance_factor^2 (R1 + R2)^2, the pair loop's own test: a candidate) and
+ *     contact_distance_factor^2 (R1 + R2)^2, the pair loop's own test: a candidate, but
+ *     for the pair of a removed bridge still in contact, cb_bridge_removed_in_contact) and
  *     every pair that holds a bridge; with newton off a pair with a ghost comes from both
  *     owners.  Per pair: the two atom IDs, the radii (smaller first, as the model hands them
  *     to the core), the gap, whether it is a candidate, and its bridge's volume; per local
@@ -79,7 +80,7 @@ class Protocol1 : protected LAMMPS_NS::Pointers {
 
     /* eqs. 13-14 solve for one alpha over all pairs: one law (the model builds one per
      * distinct contact angle of a pair of types, the mean of its two types') */
-    void check_laws(const std::vector<cb_law> &laws)
+    void check_laws(const std::vector<cb_law> &laws, const std::string &what)
     {
         if (laws.size() == 1) return;
         std::string angles;
@@ -89,15 +90,15 @@ class Protocol1 : protected LAMMPS_NS::Pointers {
                      laws[k].contact_angle * 180.0 / M_PI);
             angles += degrees;
         }
-        char text[700];
+        char text[900];
         snprintf(text, sizeof text,
-                 "cohesion model capillary: liquid protocol1 needs one contact angle for all "
+                 "cohesion model capillary: %s needs one contact angle for all "
                  "pairs (Richefeu 2007 eqs. 13-14: one alpha over all pairs, with one law), "
                  "but the atom types' contactAngle give their pairs %d contact angles (each "
                  "the mean of its two types'): %s degrees; give every atom type the same "
-                 "contactAngle, or use liquid protocol2 or protocol3, which take a contact "
-                 "angle per pair",
-                 (int)laws.size(), angles.c_str());
+                 "contactAngle, or use liquid protocol2 or protocol3 with 'start free', "
+                 "which take a contact angle per pair",
+                 what.c_str(), (int)laws.size(), angles.c_str());
         error->all(FLERR, text);
     }
 
@@ -112,9 +113,10 @@ class Protocol1 : protected LAMMPS_NS::Pointers {
     }
 
     /* The distribution (collective): all liquid, free and in bridges, over the candidate
-     * pairs with `law`; the design volume bounds the largest bridge it may give. */
-    void distribute(const cb_law *law, const int history_offset, double *free_liquid,
-                    const Reach &design)
+     * pairs with `law`; the design volume bounds the largest bridge it may give.  Returns
+     * the liquid it distributed. */
+    double distribute(const cb_law *law, const int history_offset, double *free_liquid,
+                      const Reach &design)
     {
         attempted_ = true;
         last_step_ = update->ntimestep;
@@ -130,7 +132,7 @@ class Protocol1 : protected LAMMPS_NS::Pointers {
                                       "free liquid until a distribution succeeds (this "
                                       "warning is given once)");
             warned_ = true;
-            return;
+            return result[2];
         }
         if (status != CB_OK) {
             char text[300];
@@ -142,6 +144,7 @@ class Protocol1 : protected LAMMPS_NS::Pointers {
         }
         check_design(result[1], design);
         apply(law, volumes, free_liquid);
+        return result[2];
     }
 
   private:
@@ -176,14 +179,18 @@ class Protocol1 : protected LAMMPS_NS::Pointers {
                 const double rsq = delx * delx + dely * dely + delz * delz;
                 const double radsum = radius[i] + radius[j];
                 double *history = &first_history[i][dnum * jj + history_offset];
-                const bool candidate = rsq < visited * radsum * radsum;
-                if (!candidate && history[1] == 0.0) continue;
+                cb_bridge stored;
+                std::memcpy(&stored, history, sizeof stored);
+                const double gap = std::sqrt(rsq) - radsum;
+                // a removed bridge's pair gets no liquid while its contact lasts
+                const bool candidate = rsq < visited * radsum * radsum &&
+                                       !cb_bridge_removed_in_contact(&stored, gap);
+                if (!candidate && stored.active == 0.0) continue;
                 const bool swap = radius[j] < radius[i];
                 const double values[PAIR_VALUES] = {
                     (double)std::min(tag[i], tag[j]), (double)std::max(tag[i], tag[j]),
-                    swap ? radius[j] : radius[i], swap ? radius[i] : radius[j],
-                    std::sqrt(rsq) - radsum, candidate ? 1.0 : 0.0,
-                    history[1] != 0.0 ? history[0] : 0.0};
+                    swap ? radius[j] : radius[i], swap ? radius[i] : radius[j], gap,
+                    candidate ? 1.0 : 0.0, stored.active != 0.0 ? stored.volume : 0.0};
                 pairs_.insert(pairs_.end(), values, values + PAIR_VALUES);
                 Where w = {history, &first_flags[i][jj], i, j};
                 where_.push_back(w);

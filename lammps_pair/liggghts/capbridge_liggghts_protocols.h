@@ -6,10 +6,13 @@
  *   liquid protocol1 [every N] [vmax V]   Protocol 1 (capbridge_liggghts_protocol1.h)
  *   liquid protocol3 [vmax V]             Protocol 3 (capbridge_liggghts_protocol3.h)
  *   liquid protocol2 [vmax V]             Protocol 2 (the model's pair loop)
+ *   liquid protocol2|3 [start bridges|free] [remove F remove_seed S]
+ *                                         how the liquid starts (capbridge_liggghts_start.h)
  * as LAMMPS's fix capillary/liquid names them: every N, steps between two distributions (0,
  * the default: at every re-neighboring); vmax V, the bridge volume the reach is built for
  * under any of the three (capbridge_liggghts_reach.h; without it the core's
- * cb_protocol_design_volume).  The liquid itself is the
+ * cb_protocol_design_volume); start bridges, Protocol 1's distribution once at the start
+ * of Protocols 2 and 3, and the bridges removed then.  The liquid itself is the
  * free liquid of fix property/atom freeLiquid at the start, as under Protocol 2 (LAMMPS's
  * `water` and `liquid` are the fix's; a LIGGGHTS deck sets freeLiquid per particle).
  */
@@ -20,6 +23,7 @@
 #include "capbridge_liggghts_protocol3.h"
 #include "capbridge_liggghts_reach.h"
 #include "capbridge_liggghts_settings.h"
+#include "capbridge_liggghts_start.h"
 
 #include <cerrno>
 #include <climits>
@@ -70,8 +74,8 @@ inline bool protocol_keywords_apply(const std::string &liquid, const bool every_
 class Protocols {
   public:
     explicit Protocols(LAMMPS_NS::LAMMPS *lmp)
-        : protocol1(false), protocol3(false), first(lmp), receivers(lmp), every_given_(false),
-          vmax_given_(false)
+        : protocol1(false), protocol3(false), first(lmp), receivers(lmp), start(lmp),
+          every_given_(false), vmax_given_(false)
     {
     }
 
@@ -79,6 +83,7 @@ class Protocols {
     {
         register_word(settings, "every", "0", &check_every, every_, &every_given_, input);
         register_word(settings, "vmax", "0", &check_volume, vmax_, &vmax_given_, input);
+        start.register_settings(settings, input);
     }
 
     /* After the keywords are read, with the word of `liquid`: an error (collective, as
@@ -91,12 +96,15 @@ class Protocols {
         std::string why;
         if (!protocol_keywords_apply(liquid, every_given_, vmax_given_, why))
             error->all(FLERR, why.c_str());
+        start.post_settings(liquid, error);
     }
 
     /* At init (collective), after the laws are built: Protocol 1 needs one law. */
-    void connect(const std::vector<cb_law> &laws)
+    void connect(const std::vector<cb_law> &laws, const std::string &liquid)
     {
-        if (protocol1) first.check_laws(laws);
+        if (protocol1 || start.bridges)
+            first.check_laws(laws, protocol1 ? "liquid protocol1"
+                                             : "liquid " + liquid + " with 'start bridges'");
     }
 
     /* The design volume given with vmax; 0 when not given (the reach then takes the core's
@@ -107,14 +115,15 @@ class Protocols {
     void begin_pass(const std::vector<cb_law> &laws, const int history_offset,
                     double *free_liquid, const Reach &reach)
     {
-        if (protocol1 && first.due()) first.distribute(&laws[0], history_offset, free_liquid,
-                                                       reach);
+        if (protocol1 ? first.due() : start.due(free_liquid))
+            start.set_total(first.distribute(&laws[0], history_offset, free_liquid, reach));
         if (protocol3) receivers.begin();
     }
 
     bool protocol1, protocol3;
     Protocol1 first;      // Protocol 1's distributions
     Protocol3 receivers;  // Protocol 3's receivers
+    LiquidStart start;    // Protocols 2, 3: start bridges, and the bridges removed then
 
   private:
     std::string every_, vmax_;

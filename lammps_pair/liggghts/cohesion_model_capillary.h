@@ -35,7 +35,7 @@
        both by the core's rules), _liquid.h (the liquid account of the protocols: warnings
        when liquid leaves with atoms or a new pair_style), _timestep.h (the time-step check
        against the capillary stiffness), _protocols.h (the keywords every and vmax, and
-       Protocols 1 and 3: _protocol1.h, _protocol3.h).
+       Protocols 1 and 3: _protocol1.h, _protocol3.h; start and remove: _start.h).
 
    Parallel consistency (LIGGGHTS requires `newton off` with contact history): a pair
    whose atoms live on two ranks is computed on both, each rank updating only its own
@@ -241,7 +241,7 @@ namespace ContactModels {
       reach_.register_factor(registry, laws, per_atom_liquid_ ? NULL : bridge_volume_,
                              per_atom_liquid_ ? fix_free_->vector_atom : NULL,
                              protocols_.vmax(), history_offset_);
-      protocols_.connect(laws_.laws);
+      protocols_.connect(laws_.laws, liquid_);
     }
 
     void beginPass(SurfacesIntersectData & sidata, ForceData &, ForceData &)
@@ -280,6 +280,7 @@ namespace ContactModels {
       if (wall_ || !updating_) return;
       updating_ = false;
       if (per_atom_liquid_) finish_formations();
+      if (protocols_.start.removing()) protocols_.start.report(liquid_);
       if (counting_) account_.end(fix_free_->vector_atom);
       if (census_) reach_.report_beyond();
       if (timing_)
@@ -310,11 +311,15 @@ namespace ContactModels {
     void surfacesClose(SurfacesCloseData & scdata, ForceData & i_forces, ForceData & j_forces)
     {
       if (wall_) return;
-      // dry and certainly apart: no force, and no bridge can form (only at contact), so no
-      // square root and no call into the core; not at a run's setup, where pair_force checks
-      // every stored state once (a restart file's: active 0 with other values is corrupt)
-      if (scdata.contact_history && scdata.contact_history[history_offset_ + 1] == 0.0 &&
-          !update->setupflag && cb_certainly_apart(scdata.rsq, scdata.radsum)) {
+      // dry (no bridge, no removed bridge's mark: cb_bridge_dry) and certainly apart: no
+      // force, and no bridge can form (only at contact), so no square root and no call into
+      // the core; not at a run's setup, where pair_force checks every stored state once (a
+      // restart file's: active 0 with other values is corrupt)
+      cb_bridge stored;
+      if (scdata.contact_history)
+        std::memcpy(&stored, &scdata.contact_history[history_offset_], sizeof stored);
+      if (scdata.contact_history && cb_bridge_dry(&stored) && !update->setupflag &&
+          cb_certainly_apart(scdata.rsq, scdata.radsum)) {
         if (scdata.contact_flags) *scdata.contact_flags &= ~CONTACT_COHESION_MODEL;
         return;
       }
@@ -361,6 +366,8 @@ namespace ContactModels {
           std::memcpy(hist, &bridge, sizeof bridge);
         }
       }
+      if (updating_ && protocols_.start.removing() && bridge.active != 0.0)
+        remove_if_chosen(bridge, hist, ra, rb, swap, d, gap);
       // the force of the bridge's state after this pass: from cb_bridge_step where the
       // bridge is advanced, else from cb_bridge_force below
       double capillary = 0.0;
@@ -369,8 +376,8 @@ namespace ContactModels {
       if (updating_ && cb_bridge_held(law, ra, rb, gap, &bridge, &capillary)) {
         // the common case, a bridge held in contact: its stored force, inline
         have_force = true;
-      } else if (updating_ && (bridge.active != 0.0 || gap <= 0.0)) {
-        // (a dry pair that does not touch stays dry: nothing to do)
+      } else if (updating_ && (!cb_bridge_dry(&bridge) || gap <= 0.0)) {
+        // (a dry unmarked pair that does not touch stays dry: nothing to do)
         if (!per_atom_liquid_) {
           const double available = bridge_volume_[d.itype][d.jtype];
           cb_transition change = CB_BRIDGE_STAYS_DRY;
@@ -383,15 +390,17 @@ namespace ContactModels {
                 gap, before);
           have_force = true;
           // fixed volume: the liquid of a broken bridge leaves the system
-        } else if (bridge.active != 0.0) {
-          cb_transition change = CB_BRIDGE_HELD;
-          double released = 0.0;
-          check(cb_bridge_step(law, ra, rb, gap, 0.0, &bridge, &change, &released, &capillary),
-                "bridge update", d, gap, bridge.volume);
-          have_force = true;
-          if (change == CB_BRIDGE_RUPTURED) release(released, ra, rb, swap, d, gap);
-        } else if (gap <= 0.0 && !protocols_.protocol1) {  // (P1: only in a distribution)
-          offer_formation(d, hist, ra, rb, swap, gap, en);
+        } else {
+          if (!cb_bridge_dry(&bridge)) {  // a bridge, or a removed one's mark (gone at gap >= 0)
+            cb_transition change = CB_BRIDGE_HELD;
+            double released = 0.0;
+            check(cb_bridge_step(law, ra, rb, gap, 0.0, &bridge, &change, &released,
+                                 &capillary), "bridge update", d, gap, bridge.volume);
+            have_force = true;
+            if (change == CB_BRIDGE_RUPTURED) release(released, ra, rb, swap, d, gap);
+          }
+          if (cb_bridge_may_form(&bridge, gap) && !protocols_.protocol1)  // (P1: distributes)
+            offer_formation(d, hist, ra, rb, swap, gap, en);
         }
         std::memcpy(hist, &bridge, sizeof bridge);
       }
@@ -401,12 +410,10 @@ namespace ContactModels {
       if (updating_ && protocols_.protocol3 && bridge.active != 0.0)
         protocols_.receivers.offer(d, hist, law, ra, rb, gap, en[2]);
 
-      if (bridge.active == 0.0) {
-        if (d.contact_flags) *d.contact_flags &= ~CONTACT_COHESION_MODEL;
-        return 0.0;
-      }
-      // keeps the pair's history through re-neighboring while the bridge exists
-      if (d.contact_flags) *d.contact_flags |= CONTACT_COHESION_MODEL;
+      // keeps the pair's history through re-neighboring while a bridge or a mark exists
+      if (d.contact_flags && cb_bridge_dry(&bridge)) *d.contact_flags &= ~CONTACT_COHESION_MODEL;
+      else if (d.contact_flags) *d.contact_flags |= CONTACT_COHESION_MODEL;
+      if (bridge.active == 0.0) return 0.0;
       if (updating_) census_bridge(d.itype, d.jtype, j_local, bridge.volume);
       if (!have_force)
         check(cb_bridge_force(law, ra, rb, gap, &bridge, &capillary), "force", d, gap,
@@ -440,6 +447,22 @@ namespace ContactModels {
       c.en[2] = en[2];
       c.swap = swap;
       candidates_.push_back(c);
+    }
+
+    /* keyword remove, in the pass the liquid starts: the bridge counted on one rank, and
+     * removed if the draw picks its pair (cb_bridge_remove: dry, marked while it overlaps),
+     * its liquid handed on as a broken bridge's (ra, rb in the core's order; swap: i is b) */
+    void remove_if_chosen(cb_bridge &bridge, double *hist, const double ra, const double rb,
+                          const bool swap, const SurfacesCloseData & d, const double gap)
+    {
+      const int *tag = atom->tag;
+      double volume = 0.0;
+      if (protocols_.start.chosen(tag[d.i], tag[d.j])) {
+        check(cb_bridge_remove(gap, &bridge, &volume), "bridge removal", d, gap, bridge.volume);
+        std::memcpy(hist, &bridge, sizeof bridge);
+        release(volume, ra, rb, swap, d, gap);
+      }
+      protocols_.start.count(d.j < atom->nlocal || tag[d.i] < tag[d.j], volume);
     }
 
     /* A bridge held beyond the reach (a volume above the one the reach was built for) is

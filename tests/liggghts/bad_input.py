@@ -149,7 +149,7 @@ run             1
 # forms in the setup pass and is checked against the reach (contact distance factor)
 TINY_DECK = """fix freeLiquid all property/atom freeLiquid scalar yes yes no {free!r}
 pair_style      gran model hooke/stiffness tangential history cohesion capillary &
-                law willett liquid protocol2 tally on
+                law willett liquid protocol2 start free tally on
 pair_coeff      * *
 {neigh}
 timestep        1e-6

@@ -31,7 +31,7 @@ R, V0, OVERLAP, SLOW = 1e-3, 1e-12, 1e-6, 1e-7   # SLOW: A's last speed, m per s
 XB = 1.2e-3            # B; A on the other side of x = 0 (2 ranks: 2 1 1)
 STEPS = 2300
 DECK = """pair_style      gran model hooke/stiffness tangential history cohesion capillary &
-                law richefeu liquid protocol2 tally on
+                law richefeu liquid protocol2 start free tally on
 pair_coeff      * *
 timestep        1e-6
 create_atoms    1 single {xa!r} 0 0 units box

@@ -96,6 +96,12 @@ def check_models_current(env):
                                             digest.hexdigest()[:16]))
 
 
+def liquid_words(protocol):
+    """The model's keywords after `liquid` for `protocol`, Protocols 2 and 3 starting from
+    the free liquid (`start free`), as the tests written before `start bridges` expect."""
+    return protocol if protocol == "protocol1" else protocol + " start free"
+
+
 def free_liquid_header(ranks, box, neighbor, stiffness, friction, free):
     """The start of a LIGGGHTS deck with per-atom free liquid: SI units, `ranks` along x, a
     cube box of x from box[0] to box[1] (y and z +-0.01 m), a bin neighbor skin `neighbor`,

@@ -30,7 +30,7 @@ def header(ranks, free):
     return lc.free_liquid_header(ranks, ("-0.01", "0.01"), "5e-4", "1000", "0.5", free)
 
 PAIR = """pair_style      gran model hooke/stiffness tangential history cohesion capillary &
-                law richefeu liquid protocol2 tally on
+                law richefeu liquid protocol2 start free tally on
 pair_coeff      * *
 """
 OUTPUT = """timestep        1e-6

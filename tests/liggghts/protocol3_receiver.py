@@ -68,7 +68,7 @@ pair_style      gran model hooke/stiffness tangential history
 pair_coeff      * *
 run             0
 {free}pair_style      gran model hooke/stiffness tangential history cohesion capillary &
-                law richefeu liquid protocol3 tally on
+                law richefeu liquid protocol3 start free tally on
 pair_coeff      * *
 group           moving id 1 6
 fix             move moving move linear -1.0 0 0

@@ -31,7 +31,7 @@ VMAX = 1e-11              # the reach for Protocol 1's first alpha (a few pairs 
 
 def run(env, workdir, liquid, ranks):
     code, log = lc.liggghts(env, os.path.join(lc.HERE, "in.protocols"),
-                            [("px", ranks), ("steps", STEPS), ("every", 1), ("liquid", liquid),
+                            [("px", ranks), ("steps", STEPS), ("every", 1), ("liquid", lc.liquid_words(liquid)),
                              ("vmax", VMAX)],
                             workdir, ranks=ranks, log="log.%s.%d" % (liquid, ranks))
     if code != 0:

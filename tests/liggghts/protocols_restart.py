@@ -52,7 +52,7 @@ def decks(workdir):
 
 def run(env, deck, sub, liquid, ranks, name):
     code, log = lc.liggghts(env, deck, [("px", ranks), ("steps", HALF), ("every", 1),
-                                        ("liquid", liquid), ("vmax", VMAX)],
+                                        ("liquid", lc.liquid_words(liquid)), ("vmax", VMAX)],
                             sub, ranks=ranks, log="log." + name)
     if code != 0:
         lc.fail("%s %s on %d rank(s): %s" % (liquid, name, ranks,

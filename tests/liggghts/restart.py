@@ -37,7 +37,7 @@ fix m5 all property/global coefficientFriction peratomtypepair 1 0.3
 fix m6 all property/global surfaceTension scalar 0.0728
 fix m7 all property/global contactAngle peratomtype 0
 pair_style      gran model hooke/stiffness tangential history cohesion capillary &
-                law richefeu liquid protocol2
+                law richefeu liquid protocol2 start free
 pair_coeff      * *
 timestep        1e-6
 fix             integrate all nve/sphere

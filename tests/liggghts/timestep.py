@@ -37,7 +37,7 @@ def expected():
 
 def deck(workdir, name, liquid, dt):
     base = lc.two_spheres_deck(100.0, 0.5, GAMMA, "law richefeu" + (
-        " liquid protocol2" if liquid == "protocol2" else ""),
+        " liquid protocol2 start free" if liquid == "protocol2" else ""),
         2 * R - 1e-6 if liquid == "protocol2" else 3 * R, 2 * R)
     if liquid == "protocol2":
         base = base.replace("pair_style", "fix freeLiquid all property/atom freeLiquid scalar "

@@ -250,7 +250,7 @@ def liggghts_run(env, workdir, name, protocol2):
     deck = LIGGGHTS_DECK.format(
         skin=SKIN, gamma=GAMMA, volume=VOLUME, dt=DT, rho=RHO, atoms="\n".join(atoms),
         free_fix="fix freeLiquid all property/atom freeLiquid scalar yes yes no 0"
-        if protocol2 else "", liquid="liquid protocol2" if protocol2 else "",
+        if protocol2 else "", liquid="liquid protocol2 start free" if protocol2 else "",
         grains=os.path.join(workdir, name + ".grains"), phase2=phase2)
     path = os.path.join(workdir, "in." + name)
     with open(path, "w") as f:
@@ -346,7 +346,7 @@ fix m6 all property/global surfaceTension scalar {gamma!r}
 fix m7 all property/global contactAngle peratomtype 0
 fix freeLiquid all property/atom freeLiquid scalar yes yes no 0
 pair_style      gran model hooke/stiffness tangential history cohesion capillary &
-                law richefeu liquid protocol2 vmax {vmax!r} tally on
+                law richefeu liquid protocol2 start free vmax {vmax!r} tally on
 pair_coeff      * *
 timestep        1e-6
 create_atoms    1 single 0 0 0 units box
