@@ -25,6 +25,11 @@ Writes into DIR:
 Shear strength: the paper finds no peak (Fig. 5: the residual state is reached after about one
 <D>), so the strength is the mean of tau over the plateau, dx >= min(1, dx_max/2) <D>; the peak
 (the largest tau) is reported next to it.
+Steady state (issue 18 item 3: a residual strength only where the curve is steady): the plateau
+is split into its two halves; each half's mean has a standard error from 4 block means (the
+blocks, each a quarter of a half, are long against tau's fluctuations, which single outputs are
+not); the plateau is steady when the two means agree within 2 combined standard errors
+(runs.csv: tau_half1_Pa, tau_half2_Pa, their se, steady yes/no).
 """
 import argparse
 import csv
@@ -89,6 +94,18 @@ def read_run(path):
     return params, d
 
 
+def halves_agree(tau, blocks=4):
+    """The two halves of a plateau: their means, the standard errors of these from `blocks`
+    block means each, and whether they agree within 2 combined standard errors."""
+    half = len(tau) // 2
+    out = []
+    for part in (tau[:half], tau[half:2 * half]):
+        block_means = [float(b.mean()) for b in np.array_split(part, blocks)]
+        out.append((float(part.mean()), float(np.std(block_means, ddof=1) / math.sqrt(blocks))))
+    (m1, e1), (m2, e2) = out
+    return m1, e1, m2, e2, abs(m1 - m2) <= 2 * math.hypot(e1, e2)
+
+
 def strength(d, area):
     """Plateau mean and standard deviation of tau, peak of tau, mean sigma_n on the plateau;
     the plateau mean of each wall part's x force over the section `area` (when written)."""
@@ -99,6 +116,9 @@ def strength(d, area):
              tau_std=float(d["tau_Pa"][on].std()), tau_peak=float(d["tau_Pa"].max()),
              sigma_n=float(d["sigma_n_Pa"][on].mean()),
              sigma_plate=float(d["sigma_plate_Pa"][on].mean()))
+    s["tau_half1"], s["tau_half1_se"], s["tau_half2"], s["tau_half2_se"], steady = \
+        halves_agree(d["tau_Pa"][on])
+    s["steady"] = "yes" if steady else "no"
     for name in WALL_PARTS:
         s["tau_" + name[:-2] + "_Pa"] = (float(d[name][on].mean()) / area if name in d
                                           else float("nan"))
@@ -137,6 +157,9 @@ def write_runs(runs, out):
                          sigma_n_Pa=s["sigma_n"], sigma_plate_Pa=s["sigma_plate"],
                          tau_plateau_Pa=s["tau"], tau_plateau_std_Pa=s["tau_std"],
                          tau_peak_Pa=s["tau_peak"], plateau_from_D=s["plateau_from"],
+                         tau_half1_Pa=s["tau_half1"], tau_half1_se_Pa=s["tau_half1_se"],
+                         tau_half2_Pa=s["tau_half2"], tau_half2_se_Pa=s["tau_half2_se"],
+                         steady=s["steady"],
                          dx_end_D=float(d["dx_over_D"][-1]), phi_end=float(d["phi"][-1]),
                          z_bond_start=float(d["z_bond"][0]), z_bond_end=float(d["z_bond"][-1]),
                          liquid_max_abs_rel_change=float(np.abs(d["liquid_rel_change"]).max()),
@@ -327,7 +350,9 @@ def main():
         print(f"{r['engine']:8s} {protocol:10s} {r['bonds']:4s} sigma {r['sigma_Pa']:5g} Pa "
               f"w {r['w_percent']:4g} %: tau {r['tau_plateau_Pa']:7.1f} +- {r['tau_plateau_std_Pa']:5.1f} Pa "
               f"(peak {r['tau_peak_Pa']:6.1f}) sigma_n {r['sigma_n_Pa']:6.1f} Pa z_bond "
-              f"{r['z_bond_start']:.2f} -> {r['z_bond_end']:.2f}")
+              f"{r['z_bond_start']:.2f} -> {r['z_bond_end']:.2f}; halves {r['tau_half1_Pa']:.1f} "
+              f"+- {r['tau_half1_se_Pa']:.1f} / {r['tau_half2_Pa']:.1f} +- {r['tau_half2_se_Pa']:.1f} "
+              f"Pa: steady {r['steady']}")
     for f in fits:
         print(f"fit {f['engine']} {f['protocol']} {f['bonds']} w {f['w_percent']:g} % "
               f"({f['n_runs']} runs, {f['n_seeds']} seeds): tan(phi) {f['tan_phi']:.3f} "
