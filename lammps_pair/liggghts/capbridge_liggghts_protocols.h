@@ -96,12 +96,14 @@ class Protocols {
         std::string why;
         if (!protocol_keywords_apply(liquid, every_given_, vmax_given_, why))
             error->all(FLERR, why.c_str());
-        start.post_settings(liquid, error);
+        start.post_settings(liquid);
     }
 
-    /* At init (collective), after the laws are built: Protocol 1 needs one law. */
+    /* At init (collective), after the laws are built: the keywords of the start; Protocol
+     * 1 (also at the start of Protocols 2, 3) needs one law. */
     void connect(const std::vector<cb_law> &laws, const std::string &liquid)
     {
+        start.check(liquid);
         if (protocol1 || start.bridges)
             first.check_laws(laws, protocol1 ? "liquid protocol1"
                                              : "liquid " + liquid + " with 'start bridges'");

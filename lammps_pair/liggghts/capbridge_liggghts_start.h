@@ -88,11 +88,20 @@ class LiquidStart : protected LAMMPS_NS::Pointers {
                       input);
     }
 
-    /* After the keywords are read (collective): the refusals of LAMMPS's fix. */
-    void post_settings(const std::string &liquid, LAMMPS_NS::Error *error)
+    /* After the keywords are read: the values, and the mark of the start. */
+    void post_settings(const std::string &liquid)
+    {
+        bridges = (liquid == "protocol2" || liquid == "protocol3") && start_ == "bridges";
+        fraction_ = remove_given_ ? std::atof(remove_.c_str()) : 0.0;
+        seed_ = seed_given_ ? std::strtoull(seed_word_.c_str(), NULL, 10) : 0;
+        if (bridges) mark_ = internal_fix(modify, "capillaryStarted", "no", "yes");
+    }
+
+    /* At init (collective): the refusals of LAMMPS's fix.  Not in post_settings: LIGGGHTS
+     * calls it also after a keyword it could not read, whose own error would follow. */
+    void check(const std::string &liquid)
     {
         const bool protocol23 = liquid == "protocol2" || liquid == "protocol3";
-        bridges = protocol23 && start_ == "bridges";
         std::string why;
         if (start_given_ && !protocol23)
             why = "keyword 'start' applies to 'liquid protocol2' and 'protocol3' only "
@@ -112,9 +121,6 @@ class LiquidStart : protected LAMMPS_NS::Pointers {
                                   "1, the seed of the draw of the removed bridges)"
                                 : "keyword 'remove_seed' applies with 'remove F' only";
         if (!why.empty()) error->all(FLERR, ("cohesion model capillary: " + why).c_str());
-        fraction_ = remove_given_ ? std::atof(remove_.c_str()) : 0.0;
-        seed_ = seed_given_ ? std::strtoull(seed_word_.c_str(), NULL, 10) : 0;
-        if (bridges) mark_ = internal_fix(modify, "capillaryStarted", "no", "yes");
     }
 
     /* At the start of an updating pass (collective at setup): does the liquid start now

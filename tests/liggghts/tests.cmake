@@ -105,11 +105,16 @@ add_test(NAME liggghts_protocol3_receiver
 add_test(NAME liggghts_corrupt_restart
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/corrupt_restart.py
                  ${CAPBRIDGE_LIGGGHTS_ENV} --workdir ${_liggghts_work}/corrupt_restart)
+# keyword remove (Richefeu 2007 fig. 7, 12: half of the bonds removed, the water content
+# kept): test_remove.sh's assertions on its scene, Protocols 2 and 3, 1 and 2 ranks
+add_test(NAME liggghts_remove
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/remove.py ${CAPBRIDGE_LIGGGHTS_ENV}
+                 --workdir ${_liggghts_work}/remove)
 set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts_bad_input
                      liggghts_friction liggghts_held liggghts_beyond_reach
                      liggghts_easo_comparison liggghts_between_runs
                      liggghts_restart liggghts_restart_mpi liggghts_liquid_account
                      liggghts_timestep liggghts_protocols liggghts_protocol1_reference
                      liggghts_protocols_restart liggghts_protocol3_receiver
-                     liggghts_corrupt_restart
+                     liggghts_corrupt_restart liggghts_remove
                      PROPERTIES LABELS "liggghts" TIMEOUT 600)
