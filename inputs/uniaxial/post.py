@@ -108,6 +108,12 @@ def strength(sigma):
     return float(np.max(np.convolve(sigma, kernel, mode="valid")))
 
 
+def peak_travel(travel, sigma):
+    """The travel (dh/<D>) at the centre of the window whose average is the peak."""
+    average = np.convolve(sigma, np.ones(5) / 5, mode="valid")
+    return float(travel[int(np.argmax(average)) + 2])
+
+
 def label(s):
     if s["dry"] == "yes":
         return "dry"
@@ -166,6 +172,7 @@ def pooled(rows):
     for (engine, n_grains, sample), runs in sorted(groups.items()):
         m = dict(engine=engine, N=n_grains, sample=sample, n=len(runs))
         for key, se in (("sigma_rupt_Pa", "sigma_rupt_se"), ("z_start", "z_start_se"),
+                        ("peak_at_D", "peak_at_se"),
                         ("settlement_top_mm", "settlement_top_se"),
                         ("settlement_2cm_mm", "settlement_2cm_se")):
             m[key], m[se] = mean_and_error([float(r[key]) for r in runs])
@@ -202,6 +209,7 @@ def main(argv):
                              sigma_rupt_Pa=f"{peak:.4g}", inertial=f"{inertial:.3g}",
                              vwall=s["vwall"], liquid_drift=f"{drift:.3g}", label=label(s),
                              z_start=f"{data[0, 5]:.4g}", seed=s.get("seed", ""),
+                             peak_at_D=f"{peak_travel(data[:, 2], data[:, 3]):.3g}",
                              settlement_top_mm=f"{top_mm:.4g}",
                              settlement_2cm_mm=f"{cm_mm:.4g}"))
             ax.plot(data[:, 2], data[:, 3], label=f"{label(s)} ({s.get('engine', 'lammps')}, N={s['N']})")
@@ -214,7 +222,7 @@ def main(argv):
     plt.close(fig)
 
     keys = ["run", "engine", "N", "w_percent", "protocol", "half", "dry", "seed", "sigma_rupt_Pa",
-            "inertial", "vwall", "liquid_drift", "z_start", "settlement_top_mm",
+            "inertial", "vwall", "liquid_drift", "z_start", "peak_at_D", "settlement_top_mm",
             "settlement_2cm_mm"]
     with open(os.path.join(outdir, "strength.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=keys, extrasaction="ignore")
@@ -254,12 +262,13 @@ def main(argv):
     print(f"{'engine':<9} {'run':<26} {'N':>5} {'sample':<30} {'sigma_rupt [Pa]':>15} {'inertial I':>10}")
     for r in rows:
         print(f"{r['engine']:<9} {r['run']:<26} {r['N']:>5} {r['label']:<30} {r['sigma_rupt_Pa']:>15} {r['inertial']:>10}")
-    print("\n| engine | N | sample | packings | sigma_rupt [Pa] | z at the start | settlement: top, "
-          "2 x centre of mass [mm] |")
-    print("|---|---|---|---|---|---|---|")
+    print("\n| engine | N | sample | packings | sigma_rupt [Pa] | z at the start | peak at dh/<D> | "
+          "settlement: top, 2 x centre of mass [mm] |")
+    print("|---|---|---|---|---|---|---|---|")
     for m in means:
         print(f"| {m['engine']} | {m['N']} | {m['sample']} | {m['n']} | {m['sigma_rupt_Pa']:.4g} ± "
               f"{m['sigma_rupt_se']:.2g} | {m['z_start']:.3g} ± {m['z_start_se']:.2g} | "
+              f"{m['peak_at_D']:.2g} ± {m['peak_at_se']:.2g} | "
               f"{m['settlement_top_mm']:.3f} ± {m['settlement_top_se']:.2g}, "
               f"{m['settlement_2cm_mm']:.3f} ± {m['settlement_2cm_se']:.2g} |")
     print(f"paper scale (Mohr-Coulomb from Richefeu 2007 Table I, 1 mm glass beads: c = 150 Pa, "
