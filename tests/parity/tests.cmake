@@ -10,3 +10,10 @@ add_test(NAME parity
                  $<TARGET_FILE:capbridgeplugin> ${CAPBRIDGE_LIGGGHTS_ENV}
                  --workdir ${CMAKE_CURRENT_BINARY_DIR}/parity)
 set_tests_properties(parity PROPERTIES LABELS "lammps;liggghts" TIMEOUT 600)
+# the same bridges removed by both engines (keyword remove, issue 18 item 7): the bridged and
+# the removed (id, id) pairs of one input, and the draw computed independently in removal.py
+add_test(NAME parity_removal
+         COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/removal.py
+                 ${CAPBRIDGE_LAMMPS_ENV} $<TARGET_FILE:capbridgeplugin> ${CAPBRIDGE_LIGGGHTS_ENV}
+                 --workdir ${CMAKE_CURRENT_BINARY_DIR}/parity_removal)
+set_tests_properties(parity_removal PROPERTIES LABELS "lammps;liggghts" TIMEOUT 600)
