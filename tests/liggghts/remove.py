@@ -15,7 +15,9 @@ neighbours in contact), free liquid 1 % of the mean grain mass each, `start brid
   - a removed pair in contact forms no bridge again while its contact lasts: few formations
     in the next 10 steps (< N / 5: new contacts as the packing relaxes), where without the
     mark every removed pair still in contact would form again from the liquid it released;
-  - the same N, M and bridge counts at every step on 1 and 2 ranks.
+  - the same N, M and bridge counts at every step on 1 and 2 ranks;
+  - the liquid starts once: a run after read_restart of the run that removed goes on from
+    its bridges and free liquid (no distribution, no removal, a warning that says so).
 
 usage: remove.py LIGGGHTS_ENV [--workdir DIR] [--ranks 1,2]
 """
@@ -36,6 +38,13 @@ WATER = 0.01               # liquid mass over grain mass (1 %), liquid density 1
 REMOVE = "remove 0.5 remove_seed 7723"
 STEPS = 10
 TOLERANCE = 1e-12
+# after read_restart: in.remove from its `neighbor` line on (the model, outputs and run)
+SECOND_HEAD = """atom_modify     map array
+communicate     single vel yes
+processors      ${px} 1 1
+read_restart    ${restart}
+newton          off
+"""
 REMOVAL = re.compile(r"removed (\d+) of (\d+) bridges .*holding (\S+) of the liquid (\S+),")
 
 
@@ -78,12 +87,15 @@ def free_per_particle(radii):
     return WATER * mass / 1000.0 / len(radii)
 
 
-def run(env, workdir, name, liquid, free, ranks=1):
-    """rows {step: (bridges, bridged, free, total, formed)} and the log"""
-    code, log = lc.liggghts(env, os.path.join(lc.HERE, "in.remove"),
+def run(env, workdir, name, liquid, free, ranks=1, deck=os.path.join(lc.HERE, "in.remove"),
+        restart=None):
+    """rows {step: (bridges, bridged, free, total, formed)} and the log; the run writes
+    NAME.restart, and reads `restart` if given with its deck"""
+    code, log = lc.liggghts(env, deck,
                             [("px", ranks), ("data", os.path.join(workdir, "scene.data")),
                              ("liquid", liquid), ("free", repr(free)), ("steps", STEPS),
-                             ("local", name + ".local")],
+                             ("local", name + ".local"),
+                             ("restart", restart or name + ".restart")],
                             workdir, ranks=ranks, log="log." + name)
     if code != 0:
         lc.fail("%s: %s" % (name, lc.error_line(log) or log[-2000:]))
@@ -130,6 +142,33 @@ def check(label, rows, line, all_rows, protocol):
     return bad
 
 
+def check_restart(env, workdir, name, liquid, free, first):
+    """a second run from the restart file of run `name`: it starts as `first` ended"""
+    with open(os.path.join(lc.HERE, "in.remove")) as f:
+        text = f.read()
+    deck = os.path.join(workdir, "in.remove_second")
+    with open(deck, "w") as f:
+        f.write(SECOND_HEAD + text[text.index("neighbor "):])
+    rows, log = run(env, workdir, name + "-second", liquid, free, deck=deck,
+                    restart=name + ".restart")
+    end, start = first[STEPS], rows[min(rows)]  # (the step goes on from the file)
+    bad = []
+    if REMOVAL.search(log):
+        bad.append("bridges removed again")
+    if "it has started (a restart file or an earlier pair_style): no bridge is removed" \
+            not in " ".join(log.split()):
+        bad.append("no warning that no bridge is removed")
+    if start[0] != end[0] or abs(start[2] - end[2]) > TOLERANCE * end[3]:
+        bad.append("%d bridges and free liquid %.17g, the first run ended with %d and %.17g"
+                   % (start[0], start[2], end[0], end[2]))
+    if abs(start[3] - end[3]) > TOLERANCE * end[3]:
+        bad.append("total %.17g, before %.17g" % (start[3], end[3]))
+    print("%s after read_restart: %d bridges, free liquid %.6g as the first run ended, "
+          "nothing removed %s" % (name, start[0], start[2],
+                                  "ok" if not bad else "FAIL: " + "; ".join(bad)))
+    return bad
+
+
 def main():
     parser = lc.argument_parser(__doc__)
     parser.add_argument("--ranks", default="1,2")
@@ -146,6 +185,9 @@ def main():
             line = removal(log, name)
             failures += check("%s np %d" % (protocol, ranks), rows, line, all_rows, protocol)
             counts[ranks] = (line[:2], [rows[s][0] for s in sorted(rows)])
+            if ranks == 1:
+                failures += check_restart(env, workdir, name, protocol + " " + REMOVE, free,
+                                          rows)
         for a, b in zip(sorted(counts), sorted(counts)[1:]):
             same = counts[a] == counts[b]
             print("%s: N, M and the bridges at every step on %d and %d ranks %s" % (
