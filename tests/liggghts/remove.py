@@ -17,7 +17,11 @@ neighbours in contact), free liquid 1 % of the mean grain mass each, `start brid
     mark every removed pair still in contact would form again from the liquid it released;
   - the same N, M and bridge counts at every step on 1 and 2 ranks;
   - the liquid starts once: a run after read_restart of the run that removed goes on from
-    its bridges and free liquid (no distribution, no removal, a warning that says so).
+    its bridges and free liquid (no distribution, no removal, a warning that says so);
+  - the mark goes when the gap opens, within a run: two spheres in contact, their bridge
+    removed at the start (remove 1), the second moved out of contact and back by fix move;
+    no bridge while the first contact lasts (all liquid free), one from the first step of
+    the new contact.
 
 usage: remove.py LIGGGHTS_ENV [--workdir DIR] [--ranks 1,2]
 """
@@ -169,13 +173,62 @@ def check_restart(env, workdir, name, liquid, free, first):
     return bad
 
 
+MARK_PERIOD, MARK_STEPS, OVERLAP, AMPLITUDE = 40, 30, 1e-6, 2e-6
+MARK_DECK = """pair_style      gran model hooke/stiffness tangential history cohesion capillary &
+                law richefeu liquid protocol2 vmax 1e-10 remove 1 remove_seed 1 tally on
+pair_coeff      * *
+timestep        1e-6
+create_atoms    1 single 0 0 0 units box
+create_atoms    1 single {x!r} 0 0 units box
+set             atom * diameter 2e-3 density 2500
+group           mover id 2
+variable        dx equal {amplitude!r}*sin(2*PI*elapsed/{period})
+fix             out_and_back mover move variable v_dx NULL NULL NULL NULL NULL
+compute         ends all reduce sum f_bridgeCount
+compute         free all reduce sum f_freeLiquid
+thermo_style    custom step c_ends c_free
+thermo_modify   format float %.17g norm no
+thermo          1
+run             {steps}
+"""
+
+
+def check_mark_goes(env, workdir):
+    """the removed pair's mark, cleared when its gap opens in a pass of the run"""
+    deck = os.path.join(workdir, "in.mark")
+    with open(deck, "w") as f:
+        f.write(lc.free_liquid_header(1, (-0.01, 0.01), 5e-4, 100, 0.5, 1e-11) +
+                MARK_DECK.format(x=2e-3 - OVERLAP, amplitude=AMPLITUDE, period=MARK_PERIOD,
+                                 steps=MARK_STEPS))
+    code, log = lc.liggghts(env, deck, [], workdir, log="log.mark")
+    if code != 0:
+        lc.fail("mark: %s" % (lc.error_line(log) or log[-2000:]))
+    ends = {int(r[0]): float(r[1]) for r in lc.thermo_rows(log) if len(r) == 3}
+    gap = {n: -OVERLAP + AMPLITUDE * math.sin(2 * math.pi * n / MARK_PERIOD) for n in ends}
+    opened = min(n for n in gap if gap[n] > 0)
+    again = min(n for n in gap if n > opened and gap[n] <= 0)
+    bad = []
+    if not REMOVAL.search(log) or REMOVAL.search(log).group(1) != "1":
+        bad.append("the bridge was not removed at the start")
+    if any(ends[n] != 0 for n in ends if n < again):
+        bad.append("a bridge before the new contact: %s" % [n for n in ends if ends[n]])
+    if any(ends[n] != 2 for n in ends if n >= again):
+        bad.append("no bridge at the new contact (steps %d on): %s" % (
+            again, [ends[n] for n in sorted(ends) if n >= again]))
+    print("mark: the removed pair dry in its contact (steps 0-%d) and apart (%d-%d), a "
+          "bridge from the new contact at step %d on %s" % (
+              opened - 1, opened, again - 1, again, "ok" if not bad else
+              "FAIL: " + "; ".join(bad)))
+    return bad
+
+
 def main():
     parser = lc.argument_parser(__doc__)
     parser.add_argument("--ranks", default="1,2")
     args = parser.parse_args()
     env, workdir = lc.start(args.env, args.workdir, "remove")
     free = free_per_particle(scene_data(os.path.join(workdir, "scene.data")))
-    failures = []
+    failures = check_mark_goes(env, workdir)
     for protocol in ("protocol2", "protocol3"):
         all_rows, _ = run(env, workdir, protocol + "-all", protocol, free)
         counts = {}
