@@ -258,7 +258,7 @@ fix m5 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5
 fix m7 all property/global contactAngle peratomtype {angles}
 {free}
 pair_style      gran model hooke/stiffness tangential history cohesion capillary &
-                law willett liquid protocol1 tally on
+                law willett liquid {liquid} tally on
 pair_coeff      * *
 timestep        1e-6
 create_atoms    1 single 0 0 0 units box
@@ -275,17 +275,23 @@ def protocol1_two_angles(env, workdir):
     """Protocol 1 distributes with one law (one alpha over all pairs, Richefeu eqs. 13-14):
     types of contact angles 10 and 20 degrees (pairs of 10, 15 and 20) are refused with the
     angles named and what is allowed; types of 10 and 10 run (the bridge holds both
-    spheres' 2e-11 m^3)."""
+    spheres' 2e-11 m^3).  So is Protocol 2's start bridges (Protocol 1 once), not its start
+    free (a law per pair)."""
     ok = True
-    for angles, refused in (("10 20", True), ("10 10", False)):
-        name = "protocol1_angles_" + angles.replace(" ", "_")
+    for liquid, angles, refused in (("protocol1", "10 20", "liquid protocol1"),
+                                    ("protocol1", "10 10", None),
+                                    ("protocol2", "10 20",
+                                     "liquid protocol2 with 'start bridges'"),
+                                    ("protocol2 start free", "10 20", None)):
+        name = "%s_angles_%s" % (liquid.replace(" ", "_"), angles.replace(" ", "_"))
         deck = os.path.join(workdir, "in." + name)
         with open(deck, "w") as f:
-            f.write(TWO_TYPES_DECK.format(gamma=GAMMA, angles=angles, free=FREE))
+            f.write(TWO_TYPES_DECK.format(gamma=GAMMA, angles=angles, free=FREE,
+                                          liquid=liquid))
         code, log = lc.liggghts(env, deck, [], workdir, log="log." + name)
         line = lc.error_line(log)
         if refused:
-            words = ["liquid protocol1 needs one contact angle", "10, 15, 20 degrees",
+            words = [refused + " needs one contact angle", "10, 15, 20 degrees",
                      "the same contactAngle", "liquid protocol2 or protocol3"]
             good = code != 0 and line is not None and all(w in line for w in words)
             detail = line or "no ERROR line"
@@ -296,7 +302,7 @@ def protocol1_two_angles(env, workdir):
             detail = ("bridge of %.6g m^3 (expected 2e-11)" % held if code == 0
                       else line or "exit %d" % code)
         ok = ok and good
-        print("%-45s %s\n    %s" % ("Protocol 1, contact angles " + angles,
+        print("%-45s %s\n    %s" % (liquid + ", contact angles " + angles,
                                     "ok" if good else "FAIL (exit %d)" % code, detail))
     return ok
 
