@@ -3,7 +3,8 @@
 
    fix ID group capillary/liquid fixed [V]
    fix ID group capillary/liquid protocol1|protocol2|protocol3 (water W RHO | liquid V)
-                                 [every N] [start bridges|free] [vmax V]
+                                 [every N] [start bridges|free] [remove F SEED] [vmax V]
+   fix_modify ID remove F SEED    (Protocols 2, 3: remove at the next run's start)
 
    The fix owns the liquid; pair style gran/capillary owns the bridges (in its pair
    history), which the fix reaches through CapillaryBridges (capillary_bridges.h).  This
@@ -72,13 +73,11 @@ FixCapillaryLiquid::FixCapillaryLiquid(LAMMPS *lmp, int narg, char **arg) :
   start_free = 0;
   remove_fraction = 0.0;
   remove_seed = 0;
-  removing = 0;
+  remove_pending = removing = 0;
   removed_count = removed_liquid = 0.0;
   water = liquid_density = liquid_given = vmax_given = -1.0;
   parse_keywords(parse_fixed_volume(narg, arg), narg, arg);
-  if (remove_fraction > 0.0 && start_free)
-    error->all(FLERR, "fix capillary/liquid {}: keyword 'remove' needs 'start bridges' (with "
-               "'start free' no bridge exists when the liquid starts)", mode_name());
+  if (remove_pending && start_free) refuse_removal_without_bridges("keyword 'remove'");
   if (mode != LIQUID_FIXED && (water < 0.0) == (liquid_given < 0.0))
     error->all(FLERR, "fix capillary/liquid {}: give the liquid once: 'water W RHO' (mass "
                "fraction, liquid density) or 'liquid V' (volume units)", mode_name());
@@ -209,25 +208,8 @@ void FixCapillaryLiquid::parse_keywords(int iarg, int narg, char **arg)
         error->all(FLERR, "fix capillary/liquid: start '{}': allowed bridges, free", arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(key, "remove") == 0) {
-      // Richefeu 2007 fig. 7 and fig. 12: "two times less bonds ... obtained by removing half
-      // of the bonds", the water content kept; Protocol 1 would give every eligible pair its
-      // bridge back at its next distribution, and fixed volumes keep no water content
-      if (mode != LIQUID_PROTOCOL2 && mode != LIQUID_PROTOCOL3)
-        error->all(FLERR, "fix capillary/liquid {}: keyword 'remove' applies to protocol2 and "
-                   "protocol3 only ({})", mode_name(),
-                   mode == LIQUID_PROTOCOL1
-                       ? "Protocol 1 gives every eligible pair a bridge again at its next "
-                         "distribution"
-                       : "fixed volumes keep no water content for the removed bridges");
       need(2, key);
-      remove_fraction = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      remove_seed = utils::bnumeric(FLERR, arg[iarg + 2], false, lmp);
-      if (!(remove_fraction > 0.0 && remove_fraction <= 1.0))
-        error->all(FLERR, "fix capillary/liquid: remove {}: the share of the bridges removed "
-                   "must be > 0 and <= 1 (0.5: half of them)", arg[iarg + 1]);
-      if (remove_seed < 1)
-        error->all(FLERR, "fix capillary/liquid: remove seed {}: must be a whole number >= 1",
-                   arg[iarg + 2]);
+      ask_removal("keyword 'remove'", arg[iarg + 1], arg[iarg + 2]);
       iarg += 3;
     } else if (strcmp(key, "vmax") == 0) {
       only_protocols(key);
@@ -241,6 +223,65 @@ void FixCapillaryLiquid::parse_keywords(int iarg, int narg, char **arg)
       error->all(FLERR, "fix capillary/liquid: unknown keyword '{}': allowed water, liquid, "
                  "every, start, remove, vmax", key);
   }
+}
+
+/* ----------------------------------------------------------------------
+   a removal of a share of the bridges, asked by keyword remove or by fix_modify ID remove:
+   it acts in the first force evaluation of the next run (after the liquid starts, if it
+   starts then).  Richefeu 2007 fig. 7 and fig. 12: "two times less bonds ... obtained by
+   removing half of the bonds", the water content kept; Protocol 1 would give every
+   eligible pair its bridge back at its next distribution, and fixed volumes keep no water
+   content
+------------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::ask_removal(const char *how, const char *share, const char *seed)
+{
+  if (mode != LIQUID_PROTOCOL2 && mode != LIQUID_PROTOCOL3)
+    error->all(FLERR, "fix capillary/liquid {}: {} applies to protocol2 and protocol3 only "
+               "({})", mode_name(), how,
+               mode == LIQUID_PROTOCOL1
+                   ? "Protocol 1 gives every eligible pair a bridge again at its next "
+                     "distribution"
+                   : "fixed volumes keep no water content for the removed bridges");
+  remove_fraction = utils::numeric(FLERR, share, false, lmp);
+  remove_seed = utils::bnumeric(FLERR, seed, false, lmp);
+  if (!(remove_fraction > 0.0 && remove_fraction <= 1.0))
+    error->all(FLERR, "fix capillary/liquid: remove {}: the share of the bridges removed "
+               "must be > 0 and <= 1 (0.5: half of them)", share);
+  if (remove_seed < 1)
+    error->all(FLERR, "fix capillary/liquid: remove seed {}: must be a whole number >= 1", seed);
+  remove_pending = 1;
+}
+
+void FixCapillaryLiquid::refuse_removal_without_bridges(const char *how)
+{
+  error->all(FLERR, "fix capillary/liquid {}: {} needs 'start bridges' (with 'start free' no "
+             "bridge exists when the liquid starts; or ask for the removal with fix_modify "
+             "after a run that formed bridges)", mode_name(), how);
+}
+
+/* ----------------------------------------------------------------------
+   fix_modify ID remove F SEED: remove the share F of the bridges at the next run's start
+   (e.g. after a consolidation, before shearing: Richefeu 2007 fig. 7)
+------------------------------------------------------------------------- */
+
+int FixCapillaryLiquid::modify_param(int narg, char **arg)
+{
+  if (strcmp(arg[0], "remove") != 0) return 0;
+  if (narg < 3)
+    error->all(FLERR, "fix_modify {} remove: needs 2 values, F SEED (the share of the bridges "
+               "removed, > 0 and <= 1, and the seed of the draw, a whole number >= 1)", id);
+  ask_removal("fix_modify remove", arg[1], arg[2]);
+  if (!started && start_free) refuse_removal_without_bridges("fix_modify remove");
+  return 3;
+}
+
+/* at each run's setup, once the liquid has started: a removal asked for acts in this run's
+   first force evaluation, phase 1 (update_bridges) */
+void FixCapillaryLiquid::begin_removal()
+{
+  removing = remove_pending;
+  remove_pending = 0;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -351,8 +392,7 @@ void FixCapillaryLiquid::setup_pre_force(int /*vflag*/)
   if (!started) {
     start_liquid();
     started = 1;
-    // keyword remove: in this run's first force evaluation, phase 1 (update_bridges)
-    removing = remove_fraction > 0.0;
+    begin_removal();
     return;
   }
   if (total_at_run_end >= 0.0 && free_liquid) {
@@ -368,6 +408,7 @@ void FixCapillaryLiquid::setup_pre_force(int /*vflag*/)
                      "pair history is kept per pair of atom IDs)", mode_name(), change,
                      change / total_liquid);
   }
+  begin_removal();
   pre_force(0);
 }
 
@@ -561,10 +602,14 @@ void FixCapillaryLiquid::restart(char *buf)
   alpha = list[4];
   started = (int) list[5];
   last_distribution = (bigint) list[6];
-  if (started && remove_fraction > 0.0 && comm->me == 0)
-    error->warning(FLERR, "fix capillary/liquid {}: keyword 'remove' acts when the liquid "
-                   "starts, and the restart file's liquid has started: no bridge is removed",
-                   mode_name());
+  if (started && remove_pending) {
+    remove_pending = 0;
+    if (comm->me == 0)
+      error->warning(FLERR, "fix capillary/liquid {}: keyword 'remove' acts when the liquid "
+                     "starts, and the restart file's liquid has started: no bridge is "
+                     "removed (fix_modify {} remove F SEED removes at the next run)",
+                     mode_name(), id);
+  }
 }
 
 /* ----------------------------------------------------------------------

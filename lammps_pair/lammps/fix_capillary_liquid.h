@@ -44,6 +44,7 @@ class FixCapillaryLiquid : public Fix {
   void post_run() override;
   void pre_force(int) override;
   double compute_vector(int) override;
+  int modify_param(int, char **) override;
 
   void write_restart(FILE *) override;
   void restart(char *) override;
@@ -84,8 +85,9 @@ class FixCapillaryLiquid : public Fix {
   double *free_liquid;           // Protocols 2, 3: free liquid per atom [m^3]; else nullptr
   int every;               // Protocol 1: every N steps; 0 = at every re-neighboring
   int start_free;          // Protocols 2, 3: start as free liquid (1) or as bridges (0)
-  double remove_fraction;  // keyword remove: the share of the bridges removed when the liquid
-  bigint remove_seed;      // starts (0: none), and the seed of the draw
+  double remove_fraction;  // keyword remove or fix_modify remove: the share of the bridges
+  bigint remove_seed;      // removed, and the seed of the draw
+  int remove_pending;      // a removal is asked for: it acts at the next run's start
   int removing;            // 1 in the force evaluation that removes them
   double removed_count, removed_liquid;    // this rank's removals in it (pairs counted once)
   double water, liquid_density, liquid_given, vmax_given;
@@ -116,6 +118,9 @@ class FixCapillaryLiquid : public Fix {
   void ensure_totals();
   void distribute(const char *why);
   void start_liquid();
+  void ask_removal(const char *how, const char *share, const char *seed);
+  void refuse_removal_without_bridges(const char *how);
+  void begin_removal();
   void census();
 
   // capillary_protocols.cpp

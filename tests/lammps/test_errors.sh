@@ -10,7 +10,8 @@ expect() {
     name=$1 pattern=$2
     checks=$((checks + 1))
     lmp 1 "$TMP/$name.log" -in "$DECKS/in.errors" -var pstyle "$3" -var pcoeff "$4" \
-        -var fixmode "${5:-none}" -var fixargs "${6:- }" >/dev/null 2>&1
+        -var fixmode "${5:-none}" -var fixargs "${6:- }" \
+        -var fixmodify_on "$([ -n "${7:-}" ] && echo 1 || echo 0)" -var fixmodify "${7:- }" >/dev/null 2>&1
     code=$?
     line=$(grep -h -m1 'ERROR' "$TMP/$name.log" "$TMP/$name.log.screen" 2>/dev/null | head -1)
     if [ "$code" -eq 0 ]; then
@@ -79,6 +80,14 @@ expect fix_remove_seed "remove seed 0: must be a whole number >= 1" \
     gran/capillary "$W" protocol2 "water 0.01 1000 remove 0.5 0"
 expect fix_remove_values "keyword 'remove' needs 2 values" \
     gran/capillary "$W" protocol2 "water 0.01 1000 remove 0.5"
+expect fix_modify_remove_protocol1 "fix_modify remove applies to protocol2 and protocol3 only \(Protocol 1" \
+    gran/capillary "$W" protocol1 "water 0.01 1000" "remove 0.5 7"
+expect fix_modify_remove_start_free "fix_modify remove needs 'start bridges'" \
+    gran/capillary "$W" protocol2 "water 0.01 1000 start free" "remove 0.5 7"
+expect fix_modify_remove_values "fix_modify liq remove: needs 2 values, F SEED" \
+    gran/capillary "$W" protocol3 "water 0.01 1000" "remove 0.5"
+expect fix_modify_remove_seed "remove seed -3: must be a whole number >= 1" \
+    gran/capillary "$W" protocol2 "water 0.01 1000" "remove 0.5 -3"
 
 # two atoms at the same position: an error naming them before any force is applied (no NaN
 # pressure in thermo output first)

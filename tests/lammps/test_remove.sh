@@ -13,6 +13,12 @@
 #    bridges at step 0 and few formations in the next 10 steps (< N / 5: new contacts as
 #    the packing relaxes).  Without the mark (cb_bridge_remove made to leave none) 2557
 #    of the 2999 removed bridges formed again at step 0 (5558 bridges, not 3001).
+#  - fix_modify liq remove 0.5 7723 between two runs (the half bonds after a consolidation,
+#    Richefeu fig. 7): the first run is the run without remove, step for step; the removal
+#    comes at the second run's start and not before (its message after the first run's
+#    loop), N' of the M' bridges of the first run's end, N' within 4 standard deviations
+#    of M'/2, M' - N' + formed - ruptured bridges at the second run's start, the same on
+#    1 and 2 ranks, the liquid kept.
 . "$(dirname "$0")/lib.sh" "$@"
 
 # a lattice closer than the diameters, at rest: most bridges are in contact at the start
@@ -21,9 +27,9 @@ scene_data "$TMP/scene.data" 10 10 20 12345 0 0 0.95e-3
 # rows LOG: step bridges bridged free total formed ruptured change (thermo columns 1 3 5-10)
 rows() { thermo "$1" | awk '{ print $1, $3, $5, $6, $7, $8, $9, $10 }'; }
 
-run() {  # run LOG NP NEWTON MODE LIQUID
+run() {  # run LOG NP NEWTON MODE LIQUID [LATER]
     lmp "$2" "$1" -in "$DECKS/in.granular" -var DECKS "$DECKS" -var data "$TMP/scene.data" \
-        -var newton "$3" -var mode "$4" -var liquid "$5" -var peratom 1 -var nsteps 100 \
+        -var newton "$3" -var mode "$4" -var liquid "$5" -var later "${6:-0}" -var peratom 1 -var nsteps 100 \
         -var every 10 -var out "$TMP/out" >/dev/null 2>&1 ||
         { fail "$(basename "$1"): LAMMPS failed: $(grep -h -m1 ERROR "$1" "$1.screen")"; return 1; }
 }
@@ -68,6 +74,47 @@ for mode in protocol2 protocol3; do
                     fail "$mode np $np newton $newton: bridge counts differ from $(basename "$reference")"
             fi
         done
+    done
+done
+
+# fix_modify remove between two runs (rows of the second run follow the first run's 11)
+for mode in protocol2 protocol3; do
+    rows "$TMP/$mode-all.log" | awk '{ print $1, $2 }' >"$TMP/$mode-all.counts"
+    reference=""
+    for np in 1 2; do
+        log="$TMP/$mode-later-np$np.log"
+        run "$log" $np on $mode "water 0.01 1000" 0.5 || continue
+        checks=$((checks + 1))
+        rows "$log" | awk 'NR <= 11 { print $1, $2 }' | cmp -s - "$TMP/$mode-all.counts" ||
+            fail "$mode later np $np: the first run differs from the run without remove"
+        awk '/^Loop time/ { loops++ } /removed .* of .* bridges/ { print loops + 0; exit }' "$log" |
+            grep -qx 1 || fail "$mode later np $np: the removal message is not after the first run's loop"
+        removed=$(grep -h -m1 "removed .* of .* bridges" "$log" | sed 's/.*removed \([0-9]*\) of \([0-9]*\) bridges.*/\1 \2/')
+        [ -n "$removed" ] || { fail "$mode later np $np: no removal message"; continue; }
+        rows "$log" | awk -v label="$mode later np $np" -v removed="$removed" '
+        function abs(x) { return x < 0 ? -x : x }
+        BEGIN { split(removed, r, " "); n = r[1] }
+        {
+            if (abs($8) > 1e-12) { printf "%s step %s: total liquid changed by %.3g\n", label, $1, $8; bad++ }
+            if (NR == 11) { m = $2; f = $6; u = $7 }
+            if (NR == 12) { b = $2; df = $6 - f; du = $7 - u }
+        }
+        END {
+            if (r[2] != m) { printf "%s: the fix saw %s bridges, the first run ended with %s\n", label, r[2], m; bad++ }
+            if (abs(n - m / 2) > 4 * sqrt(m / 4)) { printf "%s: removed %s of %s\n", label, n, m; bad++ }
+            if (b != m - n + df - du) { printf "%s: %s bridges at the second start, expected %s - %s + %s - %s\n", label, b, m, n, df, du; bad++ }
+            printf "%s: removed %s of %s bridges at the second run, liquid kept\n", label, n, m
+            exit bad > 0 }' >"$TMP/why" || { fail "$(head -5 "$TMP/why")"; continue; }
+        cat "$TMP/why"
+        rows "$log" | awk '{ print $1, $2 }' >"$TMP/counts"
+        if [ -z "$reference" ]; then
+            cp "$TMP/counts" "$TMP/later.counts"
+            reference=$log
+        else
+            checks=$((checks + 1))
+            cmp -s "$TMP/counts" "$TMP/later.counts" ||
+                fail "$mode later np $np: bridge counts differ from $(basename "$reference")"
+        fi
     done
 done
 finish
