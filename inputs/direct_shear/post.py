@@ -9,13 +9,17 @@ Writes into DIR:
   runs.csv          one line per run: the shear strength (the plateau mean of tau, see below),
                     the peak of tau, the normal stress on the shear plane, bonds, liquid check,
                     the seed; where the deck writes the wall forces (in.lammps since 2026-12-03),
-                    the plateau mean of each wall part's x force over pi R^2 (see WALL_PARTS)
+                    the plateau mean of each wall part's x force over pi R^2 (see WALL_PARTS),
+                    and the stresses across the split over the common section of the two parts
+                    (tau_common, sigma_n_common; common_fraction, its plateau mean share of
+                    pi R^2: see strength())
   mohr_coulomb.csv  per engine, protocol, bonds and w with at least two stresses: the fit
                     tau = sigma_n tan(phi) + c (least squares over every run: all sigmas and
                     seeds), the standard errors of tan(phi) and c from the residuals (with four
                     runs or more) and from the seeds (the same fit per seed, the standard error
                     of the mean over the seeds, with two seeds or more), and c_dry_phi, the
-                    cohesion with the friction of the dry fit (the paper's lines are parallel)
+                    cohesion with the friction of the dry fit (the paper's lines are parallel);
+                    the same fit across the split (plane) and over the common section (common)
   curves_*.png      tau against dx/<D> (Fig. 5), one file per engine and protocol
   yield_loci.png    tau against sigma_n with the fitted lines (Fig. 6a)
   cohesion.png      c against w (Fig. 6b), with the paper's saturation c_m = 120 Pa (simulation)
@@ -106,9 +110,18 @@ def halves_agree(tau, blocks=4):
     return m1, e1, m2, e2, abs(m1 - m2) <= 2 * math.hypot(e1, e2)
 
 
+def common_fraction(dx, radius):
+    """The common section of the two parts of the cell (Richefeu 3.1.1: the sample is sheared
+    "along the common section of the two parts"), two circles of radius R offset by dx, over
+    the cell's section pi R^2: (2/pi)(acos(u) - u sqrt(1 - u^2)), u = dx / 2R."""
+    u = np.clip(np.asarray(dx) / (2.0 * radius), 0.0, 1.0)
+    return (2.0 / math.pi) * (np.arccos(u) - u * np.sqrt(1.0 - u * u))
+
+
 def strength(d, area):
     """Plateau mean and standard deviation of tau, peak of tau, mean sigma_n on the plateau;
-    the plateau mean of each wall part's x force over the section `area` (when written)."""
+    the plateau mean of each wall part's x force over the section `area` (when written), and
+    the stresses across the split over the common section (tau_common, sigma_n_common)."""
     x = d["dx_over_D"]
     start = min(1.0, x[-1] / 2)
     on = x >= start
@@ -125,6 +138,19 @@ def strength(d, area):
     s["tau_plane_Pa"] = (s["tau_fx_ring_above_Pa"] + s["tau_fx_lowring_above_Pa"]
                          - s["tau_fx_plate_Pa"])
     s["sigma_n_plane_Pa"] = s["sigma_n"] - s["tau_fz_rims_above_Pa"]
+    # the paper's tau = T/S and sigma = N/S + rho g h are over the lid's area S, the cell's
+    # section; across the split the grains touch only on the common section, which shrinks as
+    # the upper part moves (0.91 of the section at 1 <D>, 0.73 at 3 <D> in the default cell of
+    # 23.6 mm, 0.95 and 0.86 in the paper's 46 mm cell): the same forces over it, row by row
+    fraction = common_fraction(d["dx_m"], math.sqrt(area / math.pi))
+    s["common_fraction"] = float(fraction[on].mean())
+    if all(name in d for name in WALL_PARTS):
+        force = d["fx_ring_above_N"] + d["fx_lowring_above_N"] - d["fx_plate_N"]
+        normal = d["sigma_n_Pa"] * area - d["fz_rims_above_N"]
+        s["tau_common_Pa"] = float((force / (fraction * area))[on].mean())
+        s["sigma_n_common_Pa"] = float((normal / (fraction * area))[on].mean())
+    else:
+        s["tau_common_Pa"] = s["sigma_n_common_Pa"] = float("nan")
     return s
 
 
@@ -165,6 +191,8 @@ def write_runs(runs, out):
                          liquid_max_abs_rel_change=float(np.abs(d["liquid_rel_change"]).max()),
                          **{k: v for k, v in s.items() if k.startswith(("tau_f", "tau_plane"))},
                          sigma_n_plane_Pa=s["sigma_n_plane_Pa"],
+                         common_fraction=s["common_fraction"], tau_common_Pa=s["tau_common_Pa"],
+                         sigma_n_common_Pa=s["sigma_n_common_Pa"],
                          run=os.path.basename(os.path.dirname(path))))
     rows.sort(key=lambda r: (r["engine"], r["protocol"], r["bonds"], r["w_percent"], r["sigma_Pa"],
                              r["seed"]))
@@ -212,6 +240,7 @@ def fit_mohr_coulomb(rows, out):
                     for seed in sorted({r["seed"] for r in rs})]
         per_seed = [f for f in per_seed if not math.isnan(f[0])]
         plane = line_fit(rs, "tau_plane_Pa", "sigma_n_plane_Pa")
+        common = line_fit(rs, "tau_common_Pa", "sigma_n_common_Pa")
         fits.append(dict(engine=engine, protocol=protocol, bonds=bonds, w_percent=w,
                          n_stresses=len({r["sigma_Pa"] for r in rs}), n_runs=len(rs),
                          n_seeds=len(per_seed), tan_phi=slope, tan_phi_se=slope_se,
@@ -219,7 +248,9 @@ def fit_mohr_coulomb(rows, out):
                          phi_deg=math.degrees(math.atan(slope)), c_Pa=c, c_se_Pa=c_se,
                          c_se_seeds_Pa=sem([f[1] for f in per_seed]),
                          tan_phi_plane=plane[0], tan_phi_plane_se=plane[2],
-                         c_plane_Pa=plane[1], c_plane_se_Pa=plane[3]))
+                         c_plane_Pa=plane[1], c_plane_se_Pa=plane[3],
+                         tan_phi_common=common[0], tan_phi_common_se=common[2],
+                         c_common_Pa=common[1], c_common_se_Pa=common[3]))
     # the paper finds the Coulomb lines of all w parallel (section 3.1.3): c with the dry friction
     # of the same engine, the mean of tau - tan(phi_dry) sigma_n (robust with few, noisy points)
     for f in fits:
@@ -231,7 +262,8 @@ def fit_mohr_coulomb(rows, out):
         names = ["engine", "protocol", "bonds", "w_percent", "n_stresses", "n_runs", "n_seeds",
                  "tan_phi", "tan_phi_se", "tan_phi_se_seeds", "phi_deg", "c_Pa", "c_se_Pa",
                  "c_se_seeds_Pa", "tan_phi_plane", "tan_phi_plane_se", "c_plane_Pa",
-                 "c_plane_se_Pa", "c_dry_phi_Pa"]
+                 "c_plane_se_Pa", "tan_phi_common", "tan_phi_common_se", "c_common_Pa",
+                 "c_common_se_Pa", "c_dry_phi_Pa"]
         writer = csv.DictWriter(f, fieldnames=names)
         writer.writeheader()
         for r in fits:
@@ -360,7 +392,9 @@ def main():
               f"{f['phi_deg']:.1f} deg), c {f['c_Pa']:.1f} +- {f['c_se_Pa']:.1f} Pa (seeds "
               f"{f['c_se_seeds_Pa']:.1f}); with the dry friction: c {f['c_dry_phi_Pa']:.1f} Pa; "
               f"across the split: tan(phi) {f['tan_phi_plane']:.3f} +- {f['tan_phi_plane_se']:.3f}, "
-              f"c {f['c_plane_Pa']:.1f} +- {f['c_plane_se_Pa']:.1f} Pa")
+              f"c {f['c_plane_Pa']:.1f} +- {f['c_plane_se_Pa']:.1f} Pa; over the common "
+              f"section: tan(phi) {f['tan_phi_common']:.3f} +- {f['tan_phi_common_se']:.3f}, "
+              f"c {f['c_common_Pa']:.1f} +- {f['c_common_se_Pa']:.1f} Pa")
 
 
 if __name__ == "__main__":
