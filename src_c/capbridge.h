@@ -126,6 +126,9 @@ typedef struct cb_law {
     /* the values of the law's own keywords, in the order of its row's list (laws.h):
      * richefeu: [0] = c of Richefeu eq. 9 (default 0.9) */
     double parameters[CB_LAW_PARAMETERS];
+    /* the bridge's viscous force (viscous.c; keywords viscosity, min_gap): eta [Pa s],
+     * 0 = none (the default), and the smallest lubrication gap s_min [m] */
+    double viscosity, viscous_min_gap;
     cb_rupture_rule rupture;
     cb_overlap_rule overlap;
     cb_validity_rule validity;
@@ -197,6 +200,10 @@ cb_status cb_law_init(cb_law *law, cb_model model, double surface_tension, doubl
  *   rupture lian|willett|willett/unequal|default
  *   overlap contact|none
  *   validity extend|strict
+ *   viscosity <Pa s>           the liquid's viscosity for the bridge's viscous force (>= 0;
+ *                              0, the default: none)
+ *   min_gap <m>                the smallest lubrication gap, the roughness (> 0; needed
+ *                              with viscosity > 0)
  * and each law's own keywords (cb_law_keyword_of; richefeu: c <value>, Richefeu's
  * constant, > 0): another law refuses one by name.
  * On error, msg names the keyword, the value and what is allowed. */
@@ -232,6 +239,18 @@ cb_validity cb_law_validity(const cb_law *law);
  * 0 in overlap and beyond rupture). */
 cb_status cb_force(const cb_law *law, double r1, double r2, double volume, double gap,
                    double *force, double *stiffness);
+
+/* The viscous force of a bridge (viscous.c): its damping coefficients [N s/m] at this gap,
+ * normal (Pitois et al. 2000, the squeeze flow of a bridge of volume V) and tangential
+ * (Goldman, Cox & Brenner 1967), the gap taken as max(gap, min_gap); the forces on sphere 1
+ * are -normal * d(gap)/dt along the normal (away from sphere 2) and -tangential * v_t, v_t
+ * its tangential velocity relative to sphere 2.  Both 0 when the law's viscosity is 0 or V
+ * is 0.  CB_ERR_NOT_FINITE, CB_ERR_NEGATIVE (a radius <= 0, V < 0), CB_ERR_NULL. */
+cb_status cb_viscous_damping(const cb_law *law, double r1, double r2, double gap,
+                             double volume, double *normal, double *tangential);
+/* Whether the law's viscous keywords go together (viscosity > 0 needs min_gap > 0);
+ * cb_law_prepare calls it. */
+cb_status cb_viscous_check(const cb_law *law, cb_message *msg);
 
 /* The rupture distance of a bridge of volume V under the law's rupture rule. */
 cb_status cb_rupture_distance(const cb_law *law, double r1, double r2, double volume,

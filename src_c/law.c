@@ -127,8 +127,8 @@ cb_status cb_law_init(cb_law *law, cb_model model, double surface_tension, doubl
 }
 
 /* The keywords of every law (cb_law_configure), then each law's own (its row). */
-static const char *const common_keywords[] = {"gamma", "theta", "rupture", "overlap",
-                                              "validity"};
+static const char *const common_keywords[] = {"gamma",    "theta",     "rupture", "overlap",
+                                              "validity", "viscosity", "min_gap"};
 enum { COMMON_KEYWORDS = sizeof common_keywords / sizeof *common_keywords };
 
 /* Any change leaves the law unprepared until cb_law_prepare derives it again. */
@@ -183,7 +183,7 @@ static cb_status law_keyword(cb_law *law, const char *keyword, const char *value
     for (int k = 0; ops && k < ops->keyword_count; ++k)
         if (strcmp(keyword, ops->keywords[k].name) == 0)
             return ops->set_keyword(law, k, value, msg);
-    char allowed[200] = "gamma";
+    char allowed[320] = "gamma";
     for (unsigned k = 1; k < COMMON_KEYWORDS; ++k)
         append_name(allowed, sizeof allowed, common_keywords[k]);
     for (int m = 0; m < CB_MODEL_COUNT; ++m) {
@@ -249,6 +249,19 @@ static cb_status apply_keyword(cb_law *law, const char *keyword, const char *val
                            value);
         return CB_OK;
     }
+    if (strcmp(keyword, "viscosity") == 0 || strcmp(keyword, "min_gap") == 0) {
+        const int viscosity = keyword[0] == 'v';
+        if (!is_number || !isfinite(number) || (viscosity ? number < 0.0 : !(number > 0.0)))
+            return cb_fail(msg, CB_ERR_RANGE,
+                           viscosity ? "viscosity '%s': give the liquid's viscosity in Pa s, "
+                                       ">= 0 (0: no viscous force)"
+                                     : "min_gap '%s': give the smallest lubrication gap (the "
+                                       "roughness) as a length > 0",
+                           value);
+        if (viscosity) law->viscosity = number;
+        else law->viscous_min_gap = number;
+        return CB_OK;
+    }
     if (strcmp(keyword, "validity") == 0) {
         if (strcmp(value, "extend") == 0) law->validity = CB_VALIDITY_EXTEND;
         else if (strcmp(value, "strict") == 0) law->validity = CB_VALIDITY_STRICT;
@@ -276,7 +289,8 @@ int cb_law_same(const cb_law *a, const cb_law *b)
         if (a->parameters[k] != b->parameters[k]) return 0;
     return a->surface_tension == b->surface_tension && a->contact_angle == b->contact_angle &&
            rupture_rule(a) == rupture_rule(b) && a->overlap == b->overlap &&
-           a->validity == b->validity;
+           a->validity == b->validity && a->viscosity == b->viscosity &&
+           a->viscous_min_gap == b->viscous_min_gap;
 }
 
 cb_status cb_law_prepare(cb_law *law, cb_message *msg)
@@ -291,6 +305,8 @@ cb_status cb_law_prepare(cb_law *law, cb_message *msg)
     if (law->rupture == CB_RUPTURE_EXACT && !has_own_rupture(law))
         return cb_fail(msg, CB_ERR_UNKNOWN_KEYWORD,
                        "rupture exact is available for the table law only");
+    status = cb_viscous_check(law, msg);
+    if (status != CB_OK) return status;
 
     law->rupture_in_use = rupture_rule(law);
     law->cos_theta = cos(law->contact_angle);
