@@ -412,6 +412,17 @@ cb_status cb_timestep_limit(const cb_law *law, cb_radius_range range1, cb_radius
                             double normal_stiffness, double *limit,
                             double *capillary_stiffness);
 
+/* The time step the engines warn above for the bridge's viscous force (law keyword
+ * viscosity): CB_TIMESTEP_FRACTION pi m / c, c the largest damping coefficient
+ * (cb_viscous_damping at the law's min_gap) at the corners of the two radius ranges for each
+ * volume given, the same margin against explicit integration's bound (dt < m/c for a damper
+ * between two masses >= m) as cb_timestep_limit's against its own.  *limit is HUGE_VAL
+ * without viscosity or volumes; *damping (may be NULL) receives c. */
+cb_status cb_viscous_timestep_limit(const cb_law *law, cb_radius_range range1,
+                                    cb_radius_range range2, const double *volumes,
+                                    size_t n_volumes, double smallest_mass, double *limit,
+                                    double *damping);
+
 /* The widths of a periodic cell between opposite faces, from the upper-triangular inverse
  * h^-1 of its edge matrix in LAMMPS's (and LIGGGHTS's) order xx, yy, zz, yz, xz, xy:
  * 1 / |row k of h^-1| (orthogonal boxes: the edge lengths). */

@@ -175,6 +175,40 @@ static void keywords_and_bad_input(void)
     cb_law_release(&law);
 }
 
+/* the time-step bound: a tenth of pi m / c, c the largest coefficient at min_gap over the
+ * radius corners and volumes; none without viscosity */
+static void timestep_bound(void)
+{
+    const cb_law law = viscous_law(0.5, 1e-6);
+    const cb_radius_range small = {0.4e-3, 0.5e-3}, large = {0.6e-3, 0.8e-3};
+    const double volumes[2] = {1e-12, 1e-10}, mass = 2e-6;
+    double limit = 0.0, damping = 0.0, largest = 0.0;
+    CHECK_STATUS(cb_viscous_timestep_limit(&law, small, large, volumes, 2, mass, &limit, &damping),
+                 CB_OK);
+    const double r1[2] = {0.4e-3, 0.5e-3}, r2[2] = {0.6e-3, 0.8e-3};
+    for (int v = 0; v < 2; ++v)
+        for (int a = 0; a < 2; ++a)
+            for (int b = 0; b < 2; ++b) {
+                double cn = 0.0, ct = 0.0;
+                CHECK_STATUS(cb_viscous_damping(&law, r1[a], r2[b], 0.0, volumes[v], &cn, &ct),
+                             CB_OK);
+                largest = fmax(largest, fmax(cn, ct));
+            }
+    CHECK_REL(damping, largest, 1e-15);
+    CHECK_REL(limit, CB_TIMESTEP_FRACTION * CB_PI * mass / largest, 1e-15);
+    /* the largest of the corners is the largest radii and volume (R* and V both raise c) */
+    double cn = 0.0, ct = 0.0;
+    CHECK_STATUS(cb_viscous_damping(&law, 0.5e-3, 0.8e-3, 1e-6, 1e-10, &cn, &ct), CB_OK);
+    CHECK_REL(damping, fmax(cn, ct), 1e-15);
+    cb_law dry;
+    CHECK_STATUS(cb_law_init(&dry, CB_MODEL_RICHEFEU, 0.0728, 0.0), CB_OK);
+    CHECK_STATUS(cb_viscous_timestep_limit(&dry, small, large, volumes, 2, mass, &limit, NULL),
+                 CB_OK);
+    CHECK(limit == HUGE_VAL);
+    CHECK_STATUS(cb_viscous_timestep_limit(&law, small, large, volumes, 2, 0.0, &limit, NULL),
+                 CB_ERR_NEGATIVE);
+}
+
 int main(int argc, char **argv)
 {
     (void)argc;
@@ -183,5 +217,6 @@ int main(int argc, char **argv)
     tangential();
     minimum_gap_and_off();
     keywords_and_bad_input();
+    timestep_bound();
     return check_report(argv[0]);
 }

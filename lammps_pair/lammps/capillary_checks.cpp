@@ -199,7 +199,7 @@ void PairGranCapillary::check_timestep()
   // the limit per type pair, for the volumes and the mass it was last evaluated at
   if (update->setupflag || timestep_key.size() != (size_t) (KEY_SIZE * np)) {
     timestep_key.assign(KEY_SIZE * np, -1.0);
-    timestep_bound.assign(2 * np, 0.0);
+    timestep_bound.assign(BOUND_SIZE * np, 0.0);
   }
   for (int i = 1; i <= n; i++)
     for (int j = i; j <= n; j++) {
@@ -212,7 +212,7 @@ void PairGranCapillary::check_timestep()
         key[0] = vlo_all[ij];
         key[1] = -minus_vhi_all[ij];
       }
-      double *bound = &timestep_bound[2 * ij];    // the limit, the capillary stiffness bound
+      double *bound = &timestep_bound[BOUND_SIZE * ij];    // see timestep_limit
       if (!std::equal(key, key + KEY_SIZE, &timestep_key[KEY_SIZE * ij])) {
         timestep_limit(i, j, key, bound);
         std::copy(key, key + KEY_SIZE, &timestep_key[KEY_SIZE * ij]);
@@ -228,13 +228,24 @@ void PairGranCapillary::check_timestep()
                          update->dt, bound[0], i, j, key[2], normal_stiffness(i, j), bound[1]);
         return;
       }
+      if (update->dt > bound[2] * (1.0 + 1e-12)) {
+        dt_warned = 1;
+        if (comm->me == 0)
+          error->warning(FLERR, "pair gran/capillary: time step {:.6g} s exceeds the limit "
+                         "{:.6g} s = 10% of pi m/c of the bridges' viscous force for types {} "
+                         "{} (smallest mass m = {:.6g}, c = {:.6g} the largest damping "
+                         "coefficient, at min_gap); this warning is given once",
+                         update->dt, bound[2], i, j, key[2], bound[3]);
+        return;
+      }
     }
 }
 
 /* ----------------------------------------------------------------------
-   the time-step limit of type pair i, j (cb_timestep_limit) for key = the two bridge
-   volumes in use (0: none) and the smallest mass: bound = the limit, the capillary
-   stiffness bound
+   the time-step limits of type pair i, j for key = the two bridge volumes in use (0: none)
+   and the smallest mass: bound = the limit (cb_timestep_limit), the capillary stiffness
+   bound, the viscous force's limit (cb_viscous_timestep_limit; HUGE_VAL without viscosity),
+   its damping coefficient
 ------------------------------------------------------------------------- */
 
 void PairGranCapillary::timestep_limit(int i, int j, const double *key, double *bound) const
@@ -249,6 +260,14 @@ void PairGranCapillary::timestep_limit(int i, int j, const double *key, double *
                "mass {}): {}", i, j, cb_model_name(law(i, j)->model), key[0], key[1],
                range_i.min, range_i.max, range_j.min, range_j.max, key[2],
                cb_status_message((cb_status) status));
+  bound[2] = HUGE_VAL;
+  bound[3] = 0.0;
+  if (law(i, j) && cb_viscous_timestep_limit(law(i, j), range_i, range_j, key, 2, key[2],
+                                             &bound[2], &bound[3]) != CB_OK)
+    error->all(FLERR, "pair gran/capillary: types {} {}: no viscous time-step limit for "
+               "bridges of volume {} to {} between radii {} to {} and {} to {} (smallest mass "
+               "{})", i, j, key[0], key[1], range_i.min, range_i.max, range_j.min,
+               range_j.max, key[2]);
 }
 
 // the normal contact stiffness of type pair i, j in the time-step limit (contact none: 0)

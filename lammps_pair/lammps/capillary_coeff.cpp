@@ -240,11 +240,6 @@ void PairGranCapillary::parse_law(const std::string &where, int iarg, int narg, 
   if (!have_gamma)
     error->all(FLERR, "{}: law {} needs 'gamma' (the surface tension, force/distance)", where,
                cb_model_name(model));
-  // the core reads the viscous force's keywords (cb_viscous_damping); this pair style does
-  // not apply that force yet, and a keyword it would silently ignore is refused
-  if (one.viscosity > 0.0 || one.viscous_min_gap > 0.0)
-    error->all(FLERR, "{}: keywords 'viscosity' and 'min_gap' (the bridge's viscous force) are "
-               "not applied by pair gran/capillary yet: leave them out", where);
 }
 
 /* ----------------------------------------------------------------------

@@ -498,18 +498,56 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
   // Protocol 1 the same way, and by FixNeighHistory for every pair it does not carry over
   // at re-neighboring.  The pair loops rely on it to skip flagged-0 pairs that are apart.
   const int in_contact = tp.contact_on && g.gap < 0.0;
+  // the bridge's viscous force (law keyword viscosity): while a bridge exists
+  const int viscous = BRIDGES && tp.law && tp.law->viscosity > 0.0 && bridge->active != 0.0;
   touch = (in_contact || (BRIDGES && !cb_bridge_dry(bridge))) ? 1 : 0;
   if (!in_contact) {
     shear[0] = shear[1] = shear[2] = 0.0;
-    if (!BRIDGES || capillary == 0.0) return;
+    if (!BRIDGES || (capillary == 0.0 && !viscous)) return;
   }
 
   if (g.r == 0.0) coincident_atoms(i, j);
   const double rinv = 1.0 / g.r;
-  double contact = 0.0;
+  double normal = 0.0;    // the normal force but the capillary, repulsive > 0
   double fs[3] = {0.0, 0.0, 0.0};
-  if (in_contact) contact = contact_force(a, tp, i, j, g, rinv, shear, history_update, fs);
-  apply_pair_force(a, i, j, g, rinv, (contact - capillary) * rinv, fs);
+  if (in_contact || viscous) {
+    RelativeVelocity rel;
+    relative_velocity(a, i, j, g, rinv, rel);
+    if (in_contact) normal = contact_force(a, tp, i, j, g, rel, shear, history_update, fs);
+    if (viscous) normal += viscous_force(tp, i, j, g, bridge->volume, rel, fs);
+  }
+  apply_pair_force(a, i, j, g, rinv, (normal - capillary) * rinv, fs);
+}
+
+/* ----------------------------------------------------------------------
+   the velocity of i relative to j: the gap's rate and the tangential velocity at the
+   contact point (with the spheres' rotation)
+------------------------------------------------------------------------- */
+
+void PairGranCapillary::relative_velocity(const AtomArrays &a, int i, int j,
+                                          const PairGeometry &g, double rinv,
+                                          RelativeVelocity &rel)
+{
+  double **v = a.v;
+  double **omega = a.omega;
+  const double radi = g.radi, radj = g.radj, rsq = g.rsq;
+  const double delx = g.del[0], dely = g.del[1], delz = g.del[2];
+  const double vr1 = v[i][0] - v[j][0];
+  const double vr2 = v[i][1] - v[j][1];
+  const double vr3 = v[i][2] - v[j][2];
+  const double vnnr = vr1 * delx + vr2 * dely + vr3 * delz;
+  rel.gap_rate = vnnr * rinv;
+
+  const double rsqinv = 1.0 / rsq;
+  const double vt1 = vr1 - delx * vnnr * rsqinv;
+  const double vt2 = vr2 - dely * vnnr * rsqinv;
+  const double vt3 = vr3 - delz * vnnr * rsqinv;
+  const double wr1 = (radi * omega[i][0] + radj * omega[j][0]) * rinv;
+  const double wr2 = (radi * omega[i][1] + radj * omega[j][1]) * rinv;
+  const double wr3 = (radi * omega[i][2] + radj * omega[j][2]) * rinv;
+  rel.tangential[0] = vt1 - (delz * wr2 - dely * wr3);
+  rel.tangential[1] = vt2 - (delx * wr3 - delz * wr1);
+  rel.tangential[2] = vt3 - (dely * wr1 - delx * wr2);
 }
 
 /* ----------------------------------------------------------------------
@@ -519,36 +557,18 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
 ------------------------------------------------------------------------- */
 
 double PairGranCapillary::contact_force(const AtomArrays &a, const TypePair &tp, int i, int j,
-                                        const PairGeometry &g, double rinv, double *shear,
-                                        int history_update, double *fs)
+                                        const PairGeometry &g, const RelativeVelocity &rel,
+                                        double *shear, int history_update, double *fs)
 {
-  double **v = a.v;
-  double **omega = a.omega;
-  const double radi = g.radi, radj = g.radj, rsq = g.rsq, gap = g.gap;
+  const double rsq = g.rsq, gap = g.gap;
   const double delx = g.del[0], dely = g.del[1], delz = g.del[2];
-  const double vr1 = v[i][0] - v[j][0];
-  const double vr2 = v[i][1] - v[j][1];
-  const double vr3 = v[i][2] - v[j][2];
-  const double vnnr = vr1 * delx + vr2 * dely + vr3 * delz;
-  const double gap_rate = vnnr * rinv;
-
   double mi = a.rmass[i], mj = a.rmass[j];
   double meff = mi * mj / (mi + mj);
   if (a.mask[i] & freeze_group_bit) meff = mj;
   if (a.mask[j] & freeze_group_bit) meff = mi;
-  const double contact = cb_contact_normal_force(&tp.contact, gap, gap_rate, sqrt(meff));
-
-  // relative tangential velocity at the contact point
+  const double contact = cb_contact_normal_force(&tp.contact, gap, rel.gap_rate, sqrt(meff));
+  const double vtr1 = rel.tangential[0], vtr2 = rel.tangential[1], vtr3 = rel.tangential[2];
   const double rsqinv = 1.0 / rsq;
-  const double vt1 = vr1 - delx * vnnr * rsqinv;
-  const double vt2 = vr2 - dely * vnnr * rsqinv;
-  const double vt3 = vr3 - delz * vnnr * rsqinv;
-  const double wr1 = (radi * omega[i][0] + radj * omega[j][0]) * rinv;
-  const double wr2 = (radi * omega[i][1] + radj * omega[j][1]) * rinv;
-  const double wr3 = (radi * omega[i][2] + radj * omega[j][2]) * rinv;
-  const double vtr1 = vt1 - (delz * wr2 - dely * wr3);
-  const double vtr2 = vt2 - (delx * wr3 - delz * wr1);
-  const double vtr3 = vt3 - (dely * wr1 - delx * wr2);
 
   if (history_update) {
     shear[0] += vtr1 * dt;
@@ -563,6 +583,26 @@ double PairGranCapillary::contact_force(const AtomArrays &a, const TypePair &tp,
   cb_contact_tangential_force(&tp.contact, cb_contact_friction_limit(&tp.contact, contact),
                               shear, fs, history_update);
   return contact;
+}
+
+/* ----------------------------------------------------------------------
+   a bridge's viscous force (the core's cb_viscous_damping, its law's viscosity): the
+   normal part returned (repulsive > 0 while the gap closes), the tangential part, against
+   the sliding at the contact point, added to fs
+------------------------------------------------------------------------- */
+
+double PairGranCapillary::viscous_force(const TypePair &tp, int i, int j, const PairGeometry &g,
+                                        double volume, const RelativeVelocity &rel, double *fs)
+{
+  double normal = 0.0, tangential = 0.0;
+  const int status = cb_viscous_damping(tp.law, g.radi, g.radj, g.gap, volume, &normal,
+                                        &tangential);
+  if (status != CB_OK)
+    error->one(FLERR, "pair gran/capillary: atoms {} and {}: no viscous force for radii {} "
+               "and {}, gap {}, bridge volume {}: {}", atom->tag[i], atom->tag[j], g.radi,
+               g.radj, g.gap, volume, cb_status_message((cb_status) status));
+  for (int k = 0; k < 3; k++) fs[k] -= tangential * rel.tangential[k];
+  return -normal * rel.gap_rate;
 }
 
 /* ----------------------------------------------------------------------

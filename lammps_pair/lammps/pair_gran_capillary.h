@@ -85,6 +85,11 @@ class PairGranCapillary : public Pair, public CapillaryBridges {
     double rsq, r, gap;   // |del|^2, |del|, r - radi - radj
     double radi, radj;
   };
+  // The velocity of i relative to j: d(gap)/dt, and the tangential part at the contact point
+  struct RelativeVelocity {
+    double gap_rate;
+    double tangential[3];
+  };
 
   cb_dashpot_rule dashpot;    // approach (Richefeu 2007 eq. 3), both, repulsive
   double dt;
@@ -101,7 +106,7 @@ class PairGranCapillary : public Pair, public CapillaryBridges {
   // check_timestep(): its reduction buffers, and per type pair the limit and the capillary
   // stiffness bound (timestep_bound) with the two volumes and the mass they are for
   // (timestep_key, KEY_SIZE each)
-  enum { KEY_SIZE = 3 };
+  enum { KEY_SIZE = 3, BOUND_SIZE = 4 };
   std::vector<double> timestep_local, timestep_global, timestep_key, timestep_bound;
   int neighprev;
 
@@ -142,9 +147,14 @@ class PairGranCapillary : public Pair, public CapillaryBridges {
   template <bool BRIDGES>
   void pair_force(const AtomArrays &a, const TypePair &tp, int i, int j, const PairGeometry &g,
                   double capillary, double *history, int &touch, int history_update);
+  __attribute__((always_inline)) inline static void
+  relative_velocity(const AtomArrays &a, int i, int j, const PairGeometry &g, double rinv,
+                    RelativeVelocity &rel);
   __attribute__((always_inline)) inline double
   contact_force(const AtomArrays &a, const TypePair &tp, int i, int j, const PairGeometry &g,
-                double rinv, double *shear, int history_update, double *fs);
+                const RelativeVelocity &rel, double *shear, int history_update, double *fs);
+  double viscous_force(const TypePair &tp, int i, int j, const PairGeometry &g, double volume,
+                       const RelativeVelocity &rel, double *fs);
   __attribute__((always_inline)) inline void apply_pair_force(const AtomArrays &a, int i, int j,
                                                               const PairGeometry &g, double rinv,
                                                               double ccel, const double *fs);

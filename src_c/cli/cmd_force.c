@@ -1,6 +1,7 @@
 /* cmd_force.c — `capbridge force`: one point of a law.
  * CSV: gap,force,stiffness,rupture_distance (force >= 0 is the attraction [N],
- * stiffness = dF/dgap [N/m]). */
+ * stiffness = dF/dgap [N/m]), and with keyword viscosity the bridge's viscous damping
+ * coefficients viscous_normal,viscous_tangential [N s/m] (cb_viscous_damping). */
 #include "args.h"
 #include "commands.h"
 
@@ -14,6 +15,9 @@ static const char usage[] =
     "Prints one CSV row with a header: gap,force,stiffness,rupture_distance\n"
     "  force      attraction [N], >= 0; 0 beyond the rupture distance\n"
     "  stiffness  dF/dgap [N/m]\n"
+    "With keywords viscosity ETA min_gap S (the bridge's viscous force), two more columns:\n"
+    "  viscous_normal, viscous_tangential  damping coefficients [N s/m]: the viscous force\n"
+    "  is -viscous_normal * d(gap)/dt along the normal and -viscous_tangential * v_t\n"
     "Example: capbridge force richefeu theta 10 --r1 1e-3 --r2 5e-4 --volume 1e-11 --gap 2e-5\n";
 
 enum { R1, R2, VOLUME, GAP, N_OPTIONS };
@@ -45,10 +49,17 @@ int cmd_force(int argc, char **argv)
         snprintf(what, sizeof what, "force at gap %.10g m, %s", gap, inputs);
         if (status != CB_OK) code = cli_status_error(name, what, status);
     }
+    double row[6] = {gap, force, stiffness, rupture, 0.0, 0.0};
+    const int viscous = law.viscosity > 0.0;
+    if (code == CLI_EXIT_OK && viscous) {
+        status = cb_viscous_damping(&law, r1, r2, gap, volume, &row[4], &row[5]);
+        snprintf(what, sizeof what, "viscous damping at gap %.10g m, %s", gap, inputs);
+        if (status != CB_OK) code = cli_status_error(name, what, status);
+    }
     if (code == CLI_EXIT_OK) {
-        double row[4] = {gap, force, stiffness, rupture};
-        puts("gap,force,stiffness,rupture_distance");
-        cli_print_row(stdout, 4, row);
+        puts(viscous ? "gap,force,stiffness,rupture_distance,viscous_normal,viscous_tangential"
+                     : "gap,force,stiffness,rupture_distance");
+        cli_print_row(stdout, viscous ? 6 : 4, row);
     }
     cb_law_release(&law);
     return code;

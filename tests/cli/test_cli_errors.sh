@@ -75,6 +75,9 @@ expect 2 "a 100 kB law name" "unknown law '$X60...' (100000 bytes)" -- force "$L
 expect 2 "a repeated law keyword" "keyword 'gamma' given twice: each law keyword may be given once" -- force richefeu gamma 0.07 gamma 0.08 $G --gap 0
 expect 2 "a repeated law keyword after others" "keyword 'theta' given twice" -- rupture willett theta 10 gamma 0.07 theta 20 --r1 1e-3 --r2 1e-3 --volume 1e-12
 expect 2 "unknown keyword" "unknown keyword 'gama'" "allowed gamma, theta, rupture, overlap, validity, viscosity, min_gap, c" -- force richefeu gama 0.07 $G --gap 0
+expect 2 "a negative viscosity" "viscosity '-1': give the liquid's viscosity in Pa s, >= 0" -- force richefeu viscosity -1 $G --gap 0
+expect 2 "a zero min_gap" "min_gap '0': give the smallest lubrication gap" -- force richefeu min_gap 0 $G --gap 0
+expect 1 "a viscosity without min_gap" "viscosity 0.001 needs min_gap" -- force richefeu viscosity 1e-3 $G --gap 0
 expect 2 "keyword without value before an option" "keyword 'gamma' needs a value" -- force richefeu gamma $G --gap 0
 expect 2 "keyword without value at the end" "keyword 'theta' needs a value" -- rupture richefeu theta
 expect 2 "unknown keyword without value" "unknown keyword 'bogus'" -- force richefeu bogus $G --gap 0

@@ -25,8 +25,8 @@ expect() {
 
 expect unknown_keyword "unknown keyword 'foo': allowed gamma, theta, rupture, overlap, validity, viscosity, min_gap, c" \
     gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728 foo 1"
-expect viscous_not_applied "keywords 'viscosity' and 'min_gap' \(the bridge's viscous force\) are not applied by pair gran/capillary yet" \
-    gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728 viscosity 1e-3 min_gap 1e-6"
+expect viscosity_without_min_gap "viscosity 0.001 needs min_gap" \
+    gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728 viscosity 1e-3"
 expect repeated_law_keyword "keyword 'gamma' given twice: each law keyword may be given once" \
     gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728 gamma 0.02 volume 1e-12"
 expect repeated_volume "keyword 'volume' given twice: each keyword may be given once" \
