@@ -7,7 +7,8 @@
  *   liquid protocol3 [vmax V]             Protocol 3 (capbridge_liggghts_protocol3.h)
  *   liquid protocol2 [vmax V]             Protocol 2 (the model's pair loop)
  *   liquid protocol2|3 [start bridges|free] [remove F remove_seed S]
- *                                         how the liquid starts (capbridge_liggghts_start.h)
+ *                                         how the liquid starts (capbridge_liggghts_start.h),
+ *                                         and fix capillaryRemove, the removal between runs
  * as LAMMPS's fix capillary/liquid names them: every N, steps between two distributions (0,
  * the default: at every re-neighboring); vmax V, the bridge volume the reach is built for
  * under any of the three (capbridge_liggghts_reach.h; without it the core's
@@ -119,6 +120,7 @@ class Protocols {
     {
         if (protocol1 ? first.due() : start.due(free_liquid))
             start.set_total(first.distribute(&laws[0], history_offset, free_liquid, reach));
+        if (!protocol1) start.ask(free_liquid);  // fix capillaryRemove, at a run's setup
         if (protocol3) receivers.begin();
     }
 

@@ -449,7 +449,7 @@ namespace ContactModels {
       candidates_.push_back(c);
     }
 
-    /* keyword remove, in the pass the liquid starts: the bridge counted on one rank, and
+    /* keyword remove or fix capillaryRemove, in the pass that removes: counted on one rank, and
      * removed if the draw picks its pair (cb_bridge_remove: dry, marked while it overlaps),
      * its liquid handed on as a broken bridge's (ra, rb in the core's order; swap: i is b) */
     void remove_if_chosen(cb_bridge &bridge, double *hist, const double ra, const double rb,
@@ -457,12 +457,13 @@ namespace ContactModels {
     {
       const int *tag = atom->tag;
       double volume = 0.0;
+      const double held = bridge.volume;
       if (protocols_.start.chosen(tag[d.i], tag[d.j])) {
         check(cb_bridge_remove(gap, &bridge, &volume), "bridge removal", d, gap, bridge.volume);
         std::memcpy(hist, &bridge, sizeof bridge);
         release(volume, ra, rb, swap, d, gap);
       }
-      protocols_.start.count(d.j < atom->nlocal || tag[d.i] < tag[d.j], volume);
+      protocols_.start.count(d.j < atom->nlocal || tag[d.i] < tag[d.j], volume, held);
     }
 
     /* A bridge held beyond the reach (a volume above the one the reach was built for) is

@@ -4,7 +4,8 @@ that names the problem; plus the dry wall: a fix wall/gran with `cohesion capill
 warns and adds no capillary force; and a bridge too small for LIGGGHTS's reach test, whose
 error must give a volume and a contact distance factor that work (both are run); and
 Protocol 1 with two atom types: refused when their contact angles differ (one law, one
-alpha: Richefeu eqs. 13-14), run when they are equal.
+alpha: Richefeu eqs. 13-14), run when they are equal; fix capillaryRemove (the removal
+request) with a bad value defined between two runs: refused at the second run's init.
 
 usage: bad_input.py LIGGGHTS_ENV [--workdir DIR]
 """
@@ -50,6 +51,7 @@ THETA = "fix m7 all property/global contactAngle peratomtype 10"
 VOLUME = "fix m8 all property/global bridgeVolume peratomtypepair 1 1e-11"
 FREE = "fix freeLiquid all property/atom freeLiquid scalar yes yes no 1e-11"
 ALL = "\n".join([GAMMA, THETA, VOLUME])
+REQUEST = "fix remove all property/global capillaryRemove vector %s"
 
 # (name, properties, pair_style words after `cohesion`, newton, words the ERROR must hold)
 CASES = [
@@ -152,6 +154,34 @@ CASES = [
      ["keyword 'start' applies to 'liquid protocol2' and 'protocol3' only"]),
     ("unknown start", ALL + "\n" + FREE, "capillary law willett liquid protocol2 start all",
      "off", ["start 'all'", "allowed: bridges, free"]),
+    # fix capillaryRemove, the removal asked for between runs (checked at each run's init):
+    # the keyword's refusals, and the removal given once
+    ("removal request with liquid protocol1", ALL + "\n" + FREE + "\n" + REQUEST % "0.5 7",
+     "capillary law willett liquid protocol1", "off",
+     ["fix property/global capillaryRemove", "applies to 'liquid protocol2' and 'protocol3' "
+      "only", "Protocol 1 gives every eligible pair a bridge again"]),
+    ("removal request with liquid fixed", ALL + "\n" + REQUEST % "0.5 7",
+     "capillary law willett", "off",
+     ["fix property/global capillaryRemove", "applies to 'liquid protocol2' and 'protocol3' "
+      "only", "fixed volumes keep no water content"]),
+    ("removal request F above 1", ALL + "\n" + FREE + "\n" + REQUEST % "1.5 7",
+     "capillary law willett liquid protocol2", "off",
+     ["capillaryRemove", "F = 1.5", "must be > 0 and <= 1"]),
+    ("removal request F 0", ALL + "\n" + FREE + "\n" + REQUEST % "0 7",
+     "capillary law willett liquid protocol3", "off",
+     ["capillaryRemove", "F = 0", "must be > 0 and <= 1"]),
+    ("removal request seed 2.5", ALL + "\n" + FREE + "\n" + REQUEST % "0.5 2.5",
+     "capillary law willett liquid protocol2", "off",
+     ["capillaryRemove", "S = 2.5", "whole number >= 1"]),
+    ("removal request seed 0", ALL + "\n" + FREE + "\n" + REQUEST % "0.5 0",
+     "capillary law willett liquid protocol2 start free", "off",
+     ["capillaryRemove", "S = 0", "whole number >= 1"]),
+    ("removal request of one value", ALL + "\n" + FREE + "\n" + REQUEST % "0.5",
+     "capillary law willett liquid protocol2", "off",
+     ["capillaryRemove", "must be a vector of 2 values, F S"]),
+    ("removal request and keyword remove", ALL + "\n" + FREE + "\n" + REQUEST % "0.5 7",
+     "capillary law willett liquid protocol2 remove 0.5 remove_seed 7", "off",
+     ["capillaryRemove", "keyword 'remove' are both given", "give the removal once"]),
     ("volume outside the validity, validity strict",
      "\n".join([GAMMA, THETA, "fix m8 all property/global bridgeVolume peratomtypepair 1 1e-8"]),
      "capillary law willett validity strict", "off",
@@ -193,6 +223,25 @@ thermo_style    custom step c_bridged
 thermo_modify   format float %.17g norm no
 run             0
 """
+
+
+def request_between_runs(env, workdir):
+    """fix capillaryRemove defined after a first run (liquid fixed, F 2): refused at the
+    init of the second run, after the first ran (its thermo output)"""
+    deck = os.path.join(workdir, "in.request_between_runs")
+    with open(deck, "w") as f:
+        f.write(HEADER.format(boundary="f f f", xlo=-0.01, xhi=0.01, zlo=-0.01, newton="off",
+                              props=ALL + "\n" + FREE) +
+                DECK.format(pair="capillary law willett liquid protocol2") +
+                REQUEST % "2 7" + "\nrun             10\n")
+    code, log = lc.liggghts(env, deck, [], workdir, log="log.request_between_runs")
+    line = lc.error_line(log)
+    good = (code != 0 and line is not None and "F = 2" in line and
+            "capillaryRemove" in line and log.count("Loop time") == 1)
+    print("%-45s %s\n    %s" % ("removal request F 2, defined between runs",
+                                "ok" if good else "FAIL (exit %d)" % code,
+                                line or "no ERROR line"))
+    return good
 
 
 def tiny_volume(env, workdir):
@@ -346,6 +395,7 @@ def main():
     ok = ok and good
     print("%-45s %s\n    %s" % ("dry wall (warning, no capillary force)",
                                 "ok" if good else "FAIL", detail))
+    ok = request_between_runs(env, workdir) and ok
     ok = tiny_volume(env, workdir) and ok
     ok = protocol1_two_angles(env, workdir) and ok
     print("bad input: %s (files in %s)" % ("PASS" if ok else "FAIL", workdir))

@@ -110,11 +110,16 @@ add_test(NAME liggghts_corrupt_restart
 add_test(NAME liggghts_remove
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/remove.py ${CAPBRIDGE_LIGGGHTS_ENV}
                  --workdir ${_liggghts_work}/remove)
+# fix capillaryRemove, the removal asked for between runs (Richefeu 2007 fig. 7: half of the
+# bonds removed after the consolidation): after run 1, once per simulation, 1 and 2 ranks
+add_test(NAME liggghts_remove_later
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/remove_later.py ${CAPBRIDGE_LIGGGHTS_ENV}
+                 --workdir ${_liggghts_work}/remove_later)
 set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts_bad_input
                      liggghts_friction liggghts_held liggghts_beyond_reach
                      liggghts_easo_comparison liggghts_between_runs
                      liggghts_restart liggghts_restart_mpi liggghts_liquid_account
                      liggghts_timestep liggghts_protocols liggghts_protocol1_reference
                      liggghts_protocols_restart liggghts_protocol3_receiver
-                     liggghts_corrupt_restart liggghts_remove
+                     liggghts_corrupt_restart liggghts_remove liggghts_remove_later
                      PROPERTIES LABELS "liggghts" TIMEOUT 600)
