@@ -108,6 +108,7 @@ PairGranCapillary::PairGranCapillary(LAMMPS *lmp) : Pair(lmp)
   liquid_mode = LIQUID_FIXED;
   liquid_groupbit = 0;
   bridges_possible = 1;
+  viscous_possible = 0;
 
   dt_warned = reach_warned = 0;
   neighprev = 0;
@@ -177,13 +178,16 @@ void PairGranCapillary::init_style()
   // one): the per-pair size list of LAMMPS's dry granular styles, cut at R_i + R_j + skin,
   // so that a dry scene pays for its contacts only.
   const int n = atom->ntypes;
-  bridges_possible = 0;
+  bridges_possible = viscous_possible = 0;
   for (int i = 1; i <= n; i++)
-    for (int j = i; j <= n; j++)
+    for (int j = i; j <= n; j++) {
       if (setflag[i][j] &&
           (liquid_mode == LIQUID_FIXED ? design_volume(i, j) > 0.0
                                         : type_pair(i, j).volume != 0.0))
         bridges_possible = 1;
+      if (setflag[i][j] && type_pair(i, j).law && type_pair(i, j).law->viscosity > 0.0)
+        viscous_possible = 1;
+    }
   create_history();
   held_volumes();
   for (int i = 1; i <= n; i++)
@@ -257,17 +261,21 @@ void PairGranCapillary::compute(int eflag, int vflag)
   // compiled twice: a dry run (no type pair can hold a bridge, init_style) runs a loop
   // without any bridge code, ~14 % fewer instructions in the pair loop (callgrind,
   // bench/README.md): a scene pays only for what it uses
-  if (bridges_possible)
-    form_bridges_and_forces<true>();
+  // and a wet run without a viscous law (viscous_possible, init_style) a loop without the
+  // viscous force: its check cost ~5 % of the instructions of a wet scene's pair loop
+  if (!bridges_possible)
+    form_bridges_and_forces<false, false>();
+  else if (viscous_possible)
+    form_bridges_and_forces<true, true>();
   else
-    form_bridges_and_forces<false>();
+    form_bridges_and_forces<true, false>();
 }
 
 /* ----------------------------------------------------------------------
    phase 2 (all modes): bridge formation and the forces
 ------------------------------------------------------------------------- */
 
-template <bool BRIDGES> void PairGranCapillary::form_bridges_and_forces()
+template <bool BRIDGES, bool VISCOUS> void PairGranCapillary::form_bridges_and_forces()
 {
   const int history_update = update->setupflag ? 0 : 1;
   const AtomArrays a = atom_arrays();
@@ -314,7 +322,8 @@ template <bool BRIDGES> void PairGranCapillary::form_bridges_and_forces()
       // (a run in which no type pair can hold a bridge: the contact forces alone)
       const double capillary =
           BRIDGES ? bridge_capillary(i, j, g, tp, bridge_of(history), per_atom) : 0.0;
-      pair_force<BRIDGES>(a, tp, i, j, g, capillary, history, touch[jj], history_update);
+      pair_force<BRIDGES, VISCOUS>(a, tp, i, j, g, capillary, history, touch[jj],
+                                   history_update);
     }
   }
 }
@@ -484,7 +493,7 @@ double PairGranCapillary::advance_bridge(int i, int j, double rsq, double gap,
    caller with the bridge's update); keeps the history flag
 ------------------------------------------------------------------------- */
 
-template <bool BRIDGES>
+template <bool BRIDGES, bool VISCOUS>
 void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int i, int j,
                                    const PairGeometry &g, double capillary, double *history,
                                    int &touch, int history_update)
@@ -498,9 +507,10 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
   // Protocol 1 the same way, and by FixNeighHistory for every pair it does not carry over
   // at re-neighboring.  The pair loops rely on it to skip flagged-0 pairs that are apart.
   const int in_contact = tp.contact_on && g.gap < 0.0;
-  // the bridge's viscous force (law keyword viscosity): while a bridge exists
-  const int viscous = BRIDGES && tp.law && tp.law->viscosity > 0.0 && bridge->active != 0.0;
   touch = (in_contact || (BRIDGES && !cb_bridge_dry(bridge))) ? 1 : 0;
+  // the bridge's viscous force (law keyword viscosity): while a bridge exists and the
+  // surfaces are apart (the core's cb_viscous_damping is 0 in overlap)
+  const int viscous = VISCOUS && g.gap > 0.0 && bridge->active != 0.0 && tp.law->viscosity > 0.0;
   if (!in_contact) {
     shear[0] = shear[1] = shear[2] = 0.0;
     if (!BRIDGES || (capillary == 0.0 && !viscous)) return;
@@ -510,44 +520,46 @@ void PairGranCapillary::pair_force(const AtomArrays &a, const TypePair &tp, int 
   const double rinv = 1.0 / g.r;
   double normal = 0.0;    // the normal force but the capillary, repulsive > 0
   double fs[3] = {0.0, 0.0, 0.0};
-  if (in_contact || viscous) {
-    RelativeVelocity rel;
-    relative_velocity(a, i, j, g, rinv, rel);
-    if (in_contact) normal = contact_force(a, tp, i, j, g, rel, shear, history_update, fs);
-    if (viscous) normal += viscous_force(tp, i, j, g, bridge->volume, rel, fs);
-  }
+  if (in_contact) normal = contact_force(a, tp, i, j, g, rinv, shear, history_update, fs);
+  // apart (gap > 0), so never with the contact force: its own relative velocity
+  if (viscous) normal += viscous_force(a, tp, i, j, g, rinv, bridge->volume, fs);
   apply_pair_force(a, i, j, g, rinv, (normal - capillary) * rinv, fs);
 }
 
 /* ----------------------------------------------------------------------
-   the velocity of i relative to j: the gap's rate and the tangential velocity at the
-   contact point (with the spheres' rotation)
+   the velocity of i relative to j: vr (of the centres), the gap's rate (returned), and
+   the tangential velocity at the contact point vtr (with the spheres' rotation); two steps,
+   so that the contact force is evaluated between them (all at once cost the contact loop
+   1-2 % more instructions: bench --compare)
 ------------------------------------------------------------------------- */
 
-void PairGranCapillary::relative_velocity(const AtomArrays &a, int i, int j,
-                                          const PairGeometry &g, double rinv,
-                                          RelativeVelocity &rel)
+double PairGranCapillary::gap_rate_of(const AtomArrays &a, int i, int j, const PairGeometry &g,
+                                      double rinv, double *vr)
 {
   double **v = a.v;
-  double **omega = a.omega;
-  const double radi = g.radi, radj = g.radj, rsq = g.rsq;
-  const double delx = g.del[0], dely = g.del[1], delz = g.del[2];
-  const double vr1 = v[i][0] - v[j][0];
-  const double vr2 = v[i][1] - v[j][1];
-  const double vr3 = v[i][2] - v[j][2];
-  const double vnnr = vr1 * delx + vr2 * dely + vr3 * delz;
-  rel.gap_rate = vnnr * rinv;
+  vr[0] = v[i][0] - v[j][0];
+  vr[1] = v[i][1] - v[j][1];
+  vr[2] = v[i][2] - v[j][2];
+  return (vr[0] * g.del[0] + vr[1] * g.del[1] + vr[2] * g.del[2]) * rinv;
+}
 
-  const double rsqinv = 1.0 / rsq;
-  const double vt1 = vr1 - delx * vnnr * rsqinv;
-  const double vt2 = vr2 - dely * vnnr * rsqinv;
-  const double vt3 = vr3 - delz * vnnr * rsqinv;
+void PairGranCapillary::sliding_velocity(const AtomArrays &a, int i, int j, const PairGeometry &g,
+                                         double rinv, const double *vr, double *vtr)
+{
+  double **omega = a.omega;
+  const double radi = g.radi, radj = g.radj;
+  const double delx = g.del[0], dely = g.del[1], delz = g.del[2];
+  const double vnnr = vr[0] * delx + vr[1] * dely + vr[2] * delz;
+  const double rsqinv = 1.0 / g.rsq;
+  const double vt1 = vr[0] - delx * vnnr * rsqinv;
+  const double vt2 = vr[1] - dely * vnnr * rsqinv;
+  const double vt3 = vr[2] - delz * vnnr * rsqinv;
   const double wr1 = (radi * omega[i][0] + radj * omega[j][0]) * rinv;
   const double wr2 = (radi * omega[i][1] + radj * omega[j][1]) * rinv;
   const double wr3 = (radi * omega[i][2] + radj * omega[j][2]) * rinv;
-  rel.tangential[0] = vt1 - (delz * wr2 - dely * wr3);
-  rel.tangential[1] = vt2 - (delx * wr3 - delz * wr1);
-  rel.tangential[2] = vt3 - (dely * wr1 - delx * wr2);
+  vtr[0] = vt1 - (delz * wr2 - dely * wr3);
+  vtr[1] = vt2 - (delx * wr3 - delz * wr1);
+  vtr[2] = vt3 - (dely * wr1 - delx * wr2);
 }
 
 /* ----------------------------------------------------------------------
@@ -557,17 +569,23 @@ void PairGranCapillary::relative_velocity(const AtomArrays &a, int i, int j,
 ------------------------------------------------------------------------- */
 
 double PairGranCapillary::contact_force(const AtomArrays &a, const TypePair &tp, int i, int j,
-                                        const PairGeometry &g, const RelativeVelocity &rel,
-                                        double *shear, int history_update, double *fs)
+                                        const PairGeometry &g, double rinv, double *shear,
+                                        int history_update, double *fs)
 {
   const double rsq = g.rsq, gap = g.gap;
   const double delx = g.del[0], dely = g.del[1], delz = g.del[2];
+  double vr[3], vtr[3];
+  const double gap_rate = gap_rate_of(a, i, j, g, rinv, vr);
+
   double mi = a.rmass[i], mj = a.rmass[j];
   double meff = mi * mj / (mi + mj);
   if (a.mask[i] & freeze_group_bit) meff = mj;
   if (a.mask[j] & freeze_group_bit) meff = mi;
-  const double contact = cb_contact_normal_force(&tp.contact, gap, rel.gap_rate, sqrt(meff));
-  const double vtr1 = rel.tangential[0], vtr2 = rel.tangential[1], vtr3 = rel.tangential[2];
+  const double contact = cb_contact_normal_force(&tp.contact, gap, gap_rate, sqrt(meff));
+
+  // relative tangential velocity at the contact point
+  sliding_velocity(a, i, j, g, rinv, vr, vtr);
+  const double vtr1 = vtr[0], vtr2 = vtr[1], vtr3 = vtr[2];
   const double rsqinv = 1.0 / rsq;
 
   if (history_update) {
@@ -591,9 +609,13 @@ double PairGranCapillary::contact_force(const AtomArrays &a, const TypePair &tp,
    the sliding at the contact point, added to fs
 ------------------------------------------------------------------------- */
 
-double PairGranCapillary::viscous_force(const TypePair &tp, int i, int j, const PairGeometry &g,
-                                        double volume, const RelativeVelocity &rel, double *fs)
+double PairGranCapillary::viscous_force(const AtomArrays &a, const TypePair &tp, int i, int j,
+                                        const PairGeometry &g, double rinv, double volume,
+                                        double *fs)
 {
+  double vr[3], vtr[3];
+  const double gap_rate = gap_rate_of(a, i, j, g, rinv, vr);
+  sliding_velocity(a, i, j, g, rinv, vr, vtr);
   double normal = 0.0, tangential = 0.0;
   const int status = cb_viscous_damping(tp.law, g.radi, g.radj, g.gap, volume, &normal,
                                         &tangential);
@@ -601,8 +623,8 @@ double PairGranCapillary::viscous_force(const TypePair &tp, int i, int j, const 
     error->one(FLERR, "pair gran/capillary: atoms {} and {}: no viscous force for radii {} "
                "and {}, gap {}, bridge volume {}: {}", atom->tag[i], atom->tag[j], g.radi,
                g.radj, g.gap, volume, cb_status_message((cb_status) status));
-  for (int k = 0; k < 3; k++) fs[k] -= tangential * rel.tangential[k];
-  return -normal * rel.gap_rate;
+  for (int k = 0; k < 3; k++) fs[k] -= tangential * vtr[k];
+  return -normal * gap_rate;
 }
 
 /* ----------------------------------------------------------------------

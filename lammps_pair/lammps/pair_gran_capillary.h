@@ -85,11 +85,6 @@ class PairGranCapillary : public Pair, public CapillaryBridges {
     double rsq, r, gap;   // |del|^2, |del|, r - radi - radj
     double radi, radj;
   };
-  // The velocity of i relative to j: d(gap)/dt, and the tangential part at the contact point
-  struct RelativeVelocity {
-    double gap_rate;
-    double tangential[3];
-  };
 
   cb_dashpot_rule dashpot;    // approach (Richefeu 2007 eq. 3), both, repulsive
   double dt;
@@ -100,6 +95,7 @@ class PairGranCapillary : public Pair, public CapillaryBridges {
   int liquid_mode, liquid_groupbit;
   int bridges_possible;    // 0: no type pair can form a bridge in this run and none exists
                            // (init_style)
+  int viscous_possible;    // 1: a type pair's law has a viscosity (init_style)
   std::vector<double> held_volume;    // per type: the largest bridge that exists (init_style)
 
   int dt_warned, reach_warned;
@@ -131,7 +127,10 @@ class PairGranCapillary : public Pair, public CapillaryBridges {
   void derive_bridges();
   [[noreturn]] void corrupt_bridge(int i, int j, const cb_bridge *bridge);
   // BRIDGES false: a run without bridges (bridges_possible 0)
-  template <bool BRIDGES> void form_bridges_and_forces();
+  // VISCOUS false: no type pair has a viscous law (viscous_possible 0)
+  // (each its own function: inlined into compute() together, the three loops exceeded
+  // GCC's growth limits and lost the inlining of the held-bridge path, +2.5 % instructions)
+  template <bool BRIDGES, bool VISCOUS> __attribute__((noinline)) void form_bridges_and_forces();
   // the pair loop's steps, inline in it (as one function they were: its registers, its
   // instruction count)
   AtomArrays atom_arrays() const;
@@ -144,17 +143,19 @@ class PairGranCapillary : public Pair, public CapillaryBridges {
                                                                 const TypePair &tp,
                                                                 cb_bridge *bridge,
                                                                 int per_atom);
-  template <bool BRIDGES>
+  template <bool BRIDGES, bool VISCOUS>
   void pair_force(const AtomArrays &a, const TypePair &tp, int i, int j, const PairGeometry &g,
                   double capillary, double *history, int &touch, int history_update);
+  __attribute__((always_inline)) inline static double
+  gap_rate_of(const AtomArrays &a, int i, int j, const PairGeometry &g, double rinv, double *vr);
   __attribute__((always_inline)) inline static void
-  relative_velocity(const AtomArrays &a, int i, int j, const PairGeometry &g, double rinv,
-                    RelativeVelocity &rel);
+  sliding_velocity(const AtomArrays &a, int i, int j, const PairGeometry &g, double rinv,
+                   const double *vr, double *vtr);
   __attribute__((always_inline)) inline double
   contact_force(const AtomArrays &a, const TypePair &tp, int i, int j, const PairGeometry &g,
-                const RelativeVelocity &rel, double *shear, int history_update, double *fs);
-  double viscous_force(const TypePair &tp, int i, int j, const PairGeometry &g, double volume,
-                       const RelativeVelocity &rel, double *fs);
+                double rinv, double *shear, int history_update, double *fs);
+  double viscous_force(const AtomArrays &a, const TypePair &tp, int i, int j,
+                       const PairGeometry &g, double rinv, double volume, double *fs);
   __attribute__((always_inline)) inline void apply_pair_force(const AtomArrays &a, int i, int j,
                                                               const PairGeometry &g, double rinv,
                                                               double ccel, const double *fs);
