@@ -17,6 +17,10 @@ pair/gran/local id history).  Checks:
   - LIGGGHTS marks removed pairs only (rupture -1: the pair of a removed bridge that still
     overlaps), and some;
   - LAMMPS's columns line up: the radii pair/local gives each pair are its two atoms'.
+And the removal between runs, at the same state (the start's bridges, after a run 0):
+LAMMPS's fix_modify liq remove 0.5 7723 and LIGGGHTS's fix property/global capillaryRemove
+vector 0.5 7723, each followed by a second run 0 whose pairs are dumped: the removed pairs
+are the same set in both engines, and the draw computed here.
 
 usage: removal.py LAMMPS_ENV PLUGIN LIGGGHTS_ENV [--workdir DIR]
 """
@@ -81,13 +85,31 @@ def key(a, b):
     return (min(int(a), int(b)), max(int(a), int(b)))
 
 
-def lammps_pairs(env, plugin, workdir, name, data, liquid, remove, radii, failures):
-    """the bridged pairs of LAMMPS at step 0"""
+# after LAMMPS_DECK's run 0: the removal asked for between runs, the pairs dumped again
+LAMMPS_LATER = """fix_modify      liq remove {fraction!r} {seed}
+undump          pairs
+dump            later all local 1 {dump} c_ids[1] c_ids[2] c_pl[1] c_pl[2] c_pl[3]
+dump_modify     later format float %.17g
+run             0
+"""
+# LIGGGHTS: in.remove up to its run, then a run 0, the request and a run 0 that dumps again
+LIGGGHTS_LATER = """run             0
+fix             capillaryRemove all property/global capillaryRemove vector {fraction!r} {seed}
+undump          pairs
+dump            later all local 100000 ${{local}} c_pairs[1] c_pairs[2] c_pairs[4] c_pairs[5] c_pairs[6]
+run             0
+"""
+
+
+def lammps_pairs(env, plugin, workdir, name, data, liquid, remove, radii, failures, after=""):
+    """the bridged pairs of LAMMPS at step 0 (after `after`, LAMMPS_DECK's commands that
+    follow its run 0, if given)"""
     dump = os.path.join(workdir, name + ".local")
     deck = os.path.join(workdir, "in." + name)
     with open(deck, "w") as f:
         f.write(LAMMPS_DECK.format(data=data, plugin=plugin, liquid=liquid, remove=remove,
-                                   dump=dump))
+                                   dump=dump) + after.format(fraction=FRACTION, seed=SEED,
+                                                             dump=dump))
     log = os.path.join(workdir, name + ".log")
     done = subprocess.run([env["LAMMPS_BINARY"], "-in", deck, "-log", log, "-nocite",
                            "-screen", "none"], capture_output=True, text=True)
@@ -103,6 +125,25 @@ def lammps_pairs(env, plugin, workdir, name, data, liquid, remove, radii, failur
         failures.append("LAMMPS %s: %d pairs whose radii are not their atoms'" % (
             name, misaligned))
     return bridged
+
+
+def liggghts_later(env, workdir, name, free):
+    """LIGGGHTS's bridged pairs after the request's removal, at the second run 0's step 0"""
+    with open(os.path.join(liggghts_common.HERE, "in.remove")) as f:
+        text = f.read()
+    deck = os.path.join(workdir, "in." + name)
+    with open(deck, "w") as f:
+        f.write(text[:text.index("run             ${steps}")] +
+                LIGGGHTS_LATER.format(fraction=FRACTION, seed=SEED))
+    code, log = liggghts_common.liggghts(
+        env, deck, [("px", 1), ("data", os.path.join(workdir, "scene.data")),
+                    ("liquid", "protocol2"), ("free", repr(free)), ("local", name + ".local")],
+        workdir, log="log." + name)
+    if code != 0 or "asked for by fix capillaryRemove" not in log:
+        liggghts_common.fail("LIGGGHTS %s: %s" % (name, liggghts_common.error_line(log) or
+                                                  "no removal line"))
+    return set(key(a, b) for a, b, _v, active, _r in
+               entries(os.path.join(workdir, name + ".local")) if active == 1.0)
 
 
 def liggghts_pairs(env, workdir, name, liquid, free):
@@ -160,6 +201,12 @@ def main():
     compare("removed pairs", lmp_all - lmp_kept, lig_all - lig_kept, failures)
     expected = set(p for p in lmp_all if drawn(p))
     compare("removed pairs, the draw computed here", lmp_all - lmp_kept, expected, failures,
+            ("LAMMPS", "here"))
+    lmp_later = lammps_pairs(lammps_env, args.plugin, workdir, "lammps-later", data, liquid,
+                             "", radii, failures, LAMMPS_LATER)
+    lig_later = liggghts_later(ligg_env, workdir, "liggghts-later", free)
+    compare("removed between runs", lmp_all - lmp_later, lig_all - lig_later, failures)
+    compare("removed between runs, the draw here", lmp_all - lmp_later, expected, failures,
             ("LAMMPS", "here"))
     marks_ok = marked and marked <= lig_all - lig_kept
     print("%-36s %d marked, all removed ones %s" % ("LIGGGHTS's marks", len(marked),

@@ -10,8 +10,9 @@ add_test(NAME parity
                  $<TARGET_FILE:capbridgeplugin> ${CAPBRIDGE_LIGGGHTS_ENV}
                  --workdir ${CMAKE_CURRENT_BINARY_DIR}/parity)
 set_tests_properties(parity PROPERTIES LABELS "lammps;liggghts" TIMEOUT 600)
-# the same bridges removed by both engines (keyword remove, issue 18 item 7): the bridged and
-# the removed (id, id) pairs of one input, and the draw computed independently in removal.py
+# the same bridges removed by both engines (keyword remove, issue 18 item 7; and between runs,
+# LAMMPS's fix_modify remove and LIGGGHTS's fix capillaryRemove): the bridged and the removed
+# (id, id) pairs of one input, and the draw computed independently in removal.py
 add_test(NAME parity_removal
          COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/removal.py
                  ${CAPBRIDGE_LAMMPS_ENV} $<TARGET_FILE:capbridgeplugin> ${CAPBRIDGE_LIGGGHTS_ENV}
