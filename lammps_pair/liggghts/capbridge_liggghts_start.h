@@ -238,13 +238,23 @@ class LiquidStart : protected LAMMPS_NS::Pointers {
     void report(const std::string &liquid)
     {
         removing_ = false;
-        double *marks = removed_mark_->vector_atom;  // done: once per simulation
-        for (int i = 0; i < atom->nlocal; ++i) marks[i] = 1.0;
         double local[4] = {removed_, kept_, removed_liquid_, kept_liquid_};
         double all[4] = {0.0, 0.0, 0.0, 0.0};
         MPI_Allreduce(local, all, 4, MPI_DOUBLE, MPI_SUM, world);
-        if (comm->me != 0) return;
         const double bridges_before = all[0] + all[1];
+        if (asked_ && bridges_before == 0.0) {
+            // no bridge yet (start free before any contact, or a run 0 before the liquid):
+            // the request waits for a run whose setup finds bridges, as LAMMPS refuses a
+            // fix_modify remove whose next run would have none
+            if (comm->me == 0)
+                say("cohesion model capillary: fix capillaryRemove: no bridge exists at this "
+                    "run's setup: nothing removed; the removal waits for a run that has "
+                    "bridges\n");
+            return;
+        }
+        double *marks = removed_mark_->vector_atom;  // done: once per simulation
+        for (int i = 0; i < atom->nlocal; ++i) marks[i] = 1.0;
+        if (comm->me != 0) return;
         // the request's total: the free liquid and the bridges' at the start of the pass
         const double total = asked_ ? free_at_start_ + all[2] + all[3] : total_;
         char text[700];

@@ -24,7 +24,10 @@ Protocol 2 also:
     same pairs as keyword remove 0.5 remove_seed 7723 (the same N of M and bridges at every
     step);
   - after the keyword's removal (its restart file), the request removes nothing: the mark
-    is set by either way.
+    is set by either way;
+  - start free, the request before the first run: run 1's setup has no bridge, says so and
+    removes nothing (no mark); run 2's setup removes N of M, M the bridges run 1 formed
+    (> 0), N within 4 standard deviations of M/2.
 
 usage: remove_later.py LIGGGHTS_ENV [--workdir DIR] [--ranks 1,2]
 """
@@ -185,6 +188,28 @@ def check_same_pass(env, workdir, free):
                                "keyword remove's removal")
 
 
+WAITS = "fix capillaryRemove: no bridge exists at this run's setup: nothing removed"
+
+
+def check_start_free(env, workdir, free):
+    """Protocol 2, start free: the request before the first run waits for a run with
+    bridges (the first run's setup has none; the second's has those the first formed)"""
+    deck = write_deck(workdir, "free", REQUEST + RUN + RUN)
+    runs, log = run(env, workdir, "free", deck, "protocol2 start free", free, runs=2)
+    bad = []
+    waits = log.find(WAITS)
+    headers = [m.start() for m in STEP_HEADER.finditer(log)]
+    if not 0 <= waits < headers[0]:
+        bad.append("no 'no bridge exists' line before run 1's first output")
+    n, m = remove.removal(log, "free")[:2]
+    end = runs[0][-1][1]
+    if m != end or not m > 0 or abs(n - m / 2.0) > 4.0 * math.sqrt(m / 4.0):
+        bad.append("run 2 removed %d of %d, run 1 ended with %d bridges" % (n, m, end))
+    print("protocol2 start free: the request waits at run 1 (no bridge), removes %d of %d at "
+          "run 2 %s" % (n, m, "ok" if not bad else "FAIL: " + "; ".join(bad)))
+    return bad
+
+
 def main():
     parser = lc.argument_parser(__doc__)
     parser.add_argument("--ranks", default="1,2")
@@ -192,7 +217,7 @@ def main():
     env, workdir = lc.start(args.env, args.workdir, "remove_later")
     free = remove.free_per_particle(remove.scene_data(os.path.join(workdir, "scene.data")))
     later = write_deck(workdir, "later", RUN + REQUEST + RUN + "write_restart   ${restart}\n")
-    failures = check_same_pass(env, workdir, free)
+    failures = check_same_pass(env, workdir, free) + check_start_free(env, workdir, free)
     for protocol in ("protocol2", "protocol3"):
         reference, _ = run(env, workdir, protocol + "-none", os.path.join(lc.HERE, "in.remove"),
                            protocol, free)
