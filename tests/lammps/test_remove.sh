@@ -27,6 +27,15 @@ scene_data "$TMP/scene.data" 10 10 20 12345 0 0 0.95e-3
 # rows LOG: step bridges bridged free total formed ruptured change (thermo columns 1 3 5-10)
 rows() { thermo "$1" | awk '{ print $1, $3, $5, $6, $7, $8, $9, $10 }'; }
 
+# same_counts LABEL LOG FILE: LOG's bridge counts per step are FILE's; the first call (FILE
+# missing) writes FILE
+same_counts() {
+    rows "$2" | awk '{ print $1, $2 }' >"$TMP/counts"
+    if [ ! -f "$3" ]; then cp "$TMP/counts" "$3"; return; fi
+    checks=$((checks + 1))
+    cmp -s "$TMP/counts" "$3" || fail "$1: bridge counts differ from the first decomposition's"
+}
+
 run() {  # run LOG NP NEWTON MODE LIQUID [LATER]
     lmp "$2" "$1" -in "$DECKS/in.granular" -var DECKS "$DECKS" -var data "$TMP/scene.data" \
         -var newton "$3" -var mode "$4" -var liquid "$5" -var later "${6:-0}" -var peratom 1 -var nsteps 100 \
@@ -37,7 +46,6 @@ run() {  # run LOG NP NEWTON MODE LIQUID [LATER]
 for mode in protocol2 protocol3; do
     run "$TMP/$mode-all.log" 1 on $mode "water 0.01 1000" || continue
     all=$(rows "$TMP/$mode-all.log" | awk 'NR == 1 { print $2, $3 }')
-    reference=""
     for newton in on off; do
         for np in 1 2 3; do
             log="$TMP/$mode-np$np-newton$newton.log"
@@ -64,15 +72,7 @@ for mode in protocol2 protocol3; do
                 printf "%s: removed %s of %s bridges, %s formed in the next 10 steps, liquid kept\n", label, n, m, early
                 exit bad > 0 }' >"$TMP/why" || { fail "$(head -5 "$TMP/why")"; continue; }
             cat "$TMP/why"
-            rows "$log" | awk '{ print $1, $2 }' >"$TMP/counts"
-            if [ -z "$reference" ]; then
-                reference=$log
-                cp "$TMP/counts" "$TMP/reference.counts"
-            else
-                checks=$((checks + 1))
-                cmp -s "$TMP/counts" "$TMP/reference.counts" ||
-                    fail "$mode np $np newton $newton: bridge counts differ from $(basename "$reference")"
-            fi
+            same_counts "$mode np $np newton $newton" "$log" "$TMP/$mode.counts"
         done
     done
 done
@@ -80,7 +80,6 @@ done
 # fix_modify remove between two runs (rows of the second run follow the first run's 11)
 for mode in protocol2 protocol3; do
     rows "$TMP/$mode-all.log" | awk '{ print $1, $2 }' >"$TMP/$mode-all.counts"
-    reference=""
     for np in 1 2; do
         log="$TMP/$mode-later-np$np.log"
         run "$log" $np on $mode "water 0.01 1000" 0.5 || continue
@@ -106,15 +105,7 @@ for mode in protocol2 protocol3; do
             printf "%s: removed %s of %s bridges at the second run, liquid kept\n", label, n, m
             exit bad > 0 }' >"$TMP/why" || { fail "$(head -5 "$TMP/why")"; continue; }
         cat "$TMP/why"
-        rows "$log" | awk '{ print $1, $2 }' >"$TMP/counts"
-        if [ -z "$reference" ]; then
-            cp "$TMP/counts" "$TMP/later.counts"
-            reference=$log
-        else
-            checks=$((checks + 1))
-            cmp -s "$TMP/counts" "$TMP/later.counts" ||
-                fail "$mode later np $np: bridge counts differ from $(basename "$reference")"
-        fi
+        same_counts "$mode later np $np" "$log" "$TMP/$mode-later.counts"
     done
 done
 finish
