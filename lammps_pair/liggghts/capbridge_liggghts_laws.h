@@ -1,12 +1,13 @@
 /* capbridge_liggghts_laws.h — the capillary laws of `cohesion capillary`, one per distinct
- * contact angle of a pair of atom types.
+ * contact angle (and, viscous on, viscosity and minimum gap) of a pair of atom types.
  *
  * Part of capbridge (lammps_pair/liggghts/). Compiled inside LIGGGHTS: C++98 and C++11.
  *
  * The law of a pair of types is the core's cb_law of the model's keywords (law, rupture,
- * overlap, validity, and the law's own keywords such as richefeu_c), the surface tension
- * and the mean of the two types' contact angles.  The laws are built again only when one of these changed (the table law builds its
- * table in cb_law_prepare), so that a run after a run costs nothing here.
+ * overlap, validity, and the law's own keywords such as richefeu_c), the surface tension,
+ * the mean of the two types' contact angles and (viscous on) the pair's liquidViscosity and
+ * viscousMinGap.  The laws are built again only when one of these changed (the table law
+ * builds its table in cb_law_prepare), so that a run after a run costs nothing here.
  */
 #ifndef CAPBRIDGE_LIGGGHTS_LAWS_H_
 #define CAPBRIDGE_LIGGGHTS_LAWS_H_
@@ -82,43 +83,51 @@ class PairLaws {
     PairLaws() : ntypes_(0) {}
     ~PairLaws() { release(); }
 
-    /* The laws of atom types 1..ntypes; contact_angle [rad] per type.  An error (all ranks:
-     * the same input) for a law the core refuses. */
+    /* The laws of atom types 1..ntypes; contact_angle [rad] per type; viscosity [Pa s] and
+     * min_gap [m] per pair of types, or NULL (viscous off).  An error (all ranks: the same
+     * input) for a law the core refuses. */
     void build(LAMMPS_NS::Error *error, const LawWords &words, const double surface_tension,
-               const double *contact_angle, const int ntypes)
+               const double *contact_angle, double **viscosity, double **min_gap,
+               const int ntypes)
     {
         refuse_other_laws_keywords(error, words);
         ntypes_ = ntypes;
-        std::vector<double> thetas;
+        std::vector<Distinct> distinct;
         std::vector<int> index((ntypes + 1) * (ntypes + 1), 0);
         for (int a = 1; a <= ntypes; ++a)
             for (int b = 1; b <= ntypes; ++b) {
-                const double theta = 0.5 * (contact_angle[a] + contact_angle[b]);
+                Distinct d = {0.5 * (contact_angle[a] + contact_angle[b]), 0.0, 0.0};
+                if (viscosity && viscosity[a][b] > 0.0) {
+                    d.viscosity = viscosity[a][b];
+                    d.min_gap = min_gap[a][b];
+                }
                 size_t k = 0;
-                while (k < thetas.size() && thetas[k] != theta) ++k;
-                if (k == thetas.size()) thetas.push_back(theta);
+                while (k < distinct.size() && !distinct[k].same(d)) ++k;
+                if (k == distinct.size()) distinct.push_back(d);
                 index[a * (ntypes + 1) + b] = (int)k;
             }
-        char number[64];
+        char number[96];
         std::string key = words.name + "|" + words.rupture + "|" + words.overlap + "|" +
                           words.validity;
         for (size_t w = 0; w < words.keywords.size(); ++w)
             key += "|" + (words.keywords[w].given ? words.keywords[w].value : "-");
         snprintf(number, sizeof number, "|%.17g", surface_tension);
         key += number;
-        for (size_t k = 0; k < thetas.size(); ++k) {
-            snprintf(number, sizeof number, "|%.17g", thetas[k]);
+        for (size_t k = 0; k < distinct.size(); ++k) {
+            snprintf(number, sizeof number, "|%.17g,%.17g,%.17g", distinct[k].theta,
+                     distinct[k].viscosity, distinct[k].min_gap);
             key += number;
         }
         pair_law = index;
-        if (key == key_ && laws.size() == thetas.size()) return;
+        if (key == key_ && laws.size() == distinct.size()) return;
 
         release();
-        for (size_t k = 0; k < thetas.size(); ++k) {
+        for (size_t k = 0; k < distinct.size(); ++k) {
             cb_law law;
             cb_message msg;
             msg.text[0] = '\0';
-            const cb_status status = cb_law_init(&law, words.model, surface_tension, thetas[k]);
+            const cb_status status = cb_law_init(&law, words.model, surface_tension,
+                                                 distinct[k].theta);
             if (status != CB_OK)
                 fail(error, std::string("cohesion model capillary: ") + cb_status_message(status));
             configure(error, words, law, "rupture", words.rupture);
@@ -129,6 +138,12 @@ class PairLaws {
                     configure(error, words, law,
                               cb_law_keyword_of(words.model, words.keywords[w].index)->name,
                               words.keywords[w].value);
+            if (distinct[k].viscosity > 0.0) {  // the core's keywords, its parsing
+                snprintf(number, sizeof number, "%.17g", distinct[k].viscosity);
+                configure(error, words, law, "viscosity", number);
+                snprintf(number, sizeof number, "%.17g", distinct[k].min_gap);
+                configure(error, words, law, "min_gap", number);
+            }
             if (cb_law_prepare(&law, &msg) != CB_OK) {
                 cb_law_release(&law);
                 fail(error, "cohesion model capillary: law " + words.name + ": " + msg.text);
@@ -151,10 +166,19 @@ class PairLaws {
         return &laws[pair_law[itype * (ntypes_ + 1) + jtype]];
     }
 
-    std::vector<cb_law> laws;   // one per distinct contact angle of a pair of types
+    std::vector<cb_law> laws;   // one per Distinct of a pair of types
     std::vector<int> pair_law;  // per pair of types, [a * (ntypes + 1) + b]: its law in laws
 
   private:
+    /* what makes the law of a pair of types differ from another's */
+    struct Distinct {
+        double theta, viscosity, min_gap;  // [rad], [Pa s], [m] (viscosity 0: none)
+        bool same(const Distinct &o) const
+        {
+            return theta == o.theta && viscosity == o.viscosity && min_gap == o.min_gap;
+        }
+    };
+
     /* A law's own keyword given for another law, refused by the name the user gave (the
      * core would read a keyword another law spells alike as that law's own). */
     static void refuse_other_laws_keywords(LAMMPS_NS::Error *error, const LawWords &words)

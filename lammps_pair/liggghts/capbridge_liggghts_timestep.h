@@ -9,9 +9,11 @@
  * radius of each type, for the bridge volumes in use: bridgeVolume of the type pair
  * (liquid fixed), or the smallest and largest bridge that exists (Protocol 2).  LAMMPS
  * gives the core its contact stiffness k_n too; LIGGGHTS checks the contact (Rayleigh and
- * Hertz times) itself with fix check/timestep/gran, so the model gives 0.  The bound (~200
- * force evaluations per volume and pair of radii) is evaluated again only when a type
- * pair's volumes or radii have changed.
+ * Hertz times) itself with fix check/timestep/gran, so the model gives 0.  With `viscous
+ * on`, a time step above CB_TIMESTEP_FRACTION pi m / c warns too, c the largest damping
+ * coefficient of the bridges' viscous force (cb_viscous_timestep_limit, at the law's
+ * minimum gap), as in LAMMPS.  The bounds (~200 force evaluations per volume and pair of
+ * radii) are evaluated again only when a type pair's volumes or radii have changed.
  */
 #ifndef CAPBRIDGE_LIGGGHTS_TIMESTEP_H_
 #define CAPBRIDGE_LIGGGHTS_TIMESTEP_H_
@@ -59,9 +61,10 @@ class TimestepCheck : protected LAMMPS_NS::Pointers {
     }
 
     /* The end of the pass (collective). laws[pair_law[a * (ntypes + 1) + b]] is the law of
-     * types a, b; bridge_volume the volume of a new bridge (liquid fixed) or NULL. */
+     * types a, b; bridge_volume the volume of a new bridge (liquid fixed) or NULL; viscous:
+     * the laws may have a viscosity (viscous on). */
     void finish(const std::vector<cb_law> &laws, const std::vector<int> &pair_law,
-                double **bridge_volume)
+                double **bridge_volume, const bool viscous)
     {
         const int n = ntypes_;
         const int np = (n + 1) * (n + 1);
@@ -100,12 +103,12 @@ class TimestepCheck : protected LAMMPS_NS::Pointers {
                     key[1] = -minus_vhi[ab];
                 }
                 const double m = std::min(mass[a], mass[b]);
+                const cb_law *law = &laws[pair_law[ab]];
                 if (!std::equal(key, key + KEY, &keys_[KEY * ab])) {
                     // (a bound the core cannot give, e.g. radii outside a table: no check)
                     double limit = 0.0, k = 0.0;
                     const cb_radius_range ra = {key[2], key[3]}, rb = {key[4], key[5]};
-                    if (cb_timestep_limit(&laws[pair_law[ab]], ra, rb, key, 2, m, 0.0, &limit,
-                                          &k) != CB_OK)
+                    if (cb_timestep_limit(law, ra, rb, key, 2, m, 0.0, &limit, &k) != CB_OK)
                         k = 0.0;
                     bound_[ab] = k;
                     std::copy(key, key + KEY, &keys_[KEY * ab]);
@@ -113,11 +116,10 @@ class TimestepCheck : protected LAMMPS_NS::Pointers {
                 const double k = bound_[ab];
                 double limit = HUGE_VAL;
                 const cb_radius_range none = {0.0, 0.0};
-                if (!(k > 0.0) ||
-                    cb_timestep_limit(NULL, none, none, NULL, 0, m, k, &limit, NULL) != CB_OK)
-                    continue;
                 // a deck that sets dt to exactly this limit is within it: allow for rounding
-                if (update->dt > limit * (1.0 + 1e-12)) {
+                if (k > 0.0 &&
+                    cb_timestep_limit(NULL, none, none, NULL, 0, m, k, &limit, NULL) == CB_OK &&
+                    update->dt > limit * (1.0 + 1e-12)) {
                     warned_ = true;
                     if (comm->me == 0) {
                         char text[512];
@@ -133,10 +135,36 @@ class TimestepCheck : protected LAMMPS_NS::Pointers {
                     }
                     return;
                 }
+                // (8 damping evaluations: not worth a cache)
+                if (viscous && warn_viscous(a, b, law, key, m)) return;
             }
     }
 
   private:
+    /* the viscous limit of types a, b (cb_viscous_timestep_limit for the volumes and radius
+     * ranges of key): warned once */
+    bool warn_viscous(const int a, const int b, const cb_law *law, const double *key,
+                      const double m)
+    {
+        double limit = HUGE_VAL, c = 0.0;
+        const cb_radius_range ra = {key[2], key[3]}, rb = {key[4], key[5]};
+        if (cb_viscous_timestep_limit(law, ra, rb, key, 2, m, &limit, &c) != CB_OK ||
+            !(update->dt > limit * (1.0 + 1e-12)))
+            return false;
+        warned_ = true;
+        if (comm->me == 0) {
+            char text[512];
+            snprintf(text, sizeof text,
+                     "cohesion model capillary: time step %.6g s exceeds the limit %.6g s = "
+                     "%g%% of pi m/c of the bridges' viscous force for types %d %d (smallest "
+                     "mass m = %.6g, c = %.6g the largest damping coefficient, at "
+                     "viscousMinGap); this warning is given once",
+                     update->dt, limit, 100.0 * CB_TIMESTEP_FRACTION, a, b, m, c);
+            error->warning(FLERR, text);
+        }
+        return true;
+    }
+
     enum { KEY = 6 };  // two volumes (first the volumes cb_timestep_limit gets), then the
                        // radius range of each type
 

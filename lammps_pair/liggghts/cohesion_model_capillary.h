@@ -35,7 +35,8 @@
        both by the core's rules), _liquid.h (the liquid account of the protocols: warnings
        when liquid leaves with atoms or a new pair_style), _timestep.h (the time-step check
        against the capillary stiffness), _protocols.h (the keywords every and vmax, and
-       Protocols 1 and 3: _protocol1.h, _protocol3.h; start and remove: _start.h).
+       Protocols 1 and 3: _protocol1.h, _protocol3.h; start and remove: _start.h), _viscous.h
+       (keyword viscous: the bridges' viscous force), _checks.h (the input's checks).
 
    Parallel consistency (LIGGGHTS requires `newton off` with contact history): a pair
    whose atoms live on two ranks is computed on both, each rank updating only its own
@@ -58,11 +59,13 @@ COHESION_MODEL(COHESION_CAPILLARY,capillary,9)
 #include "contact_models.h"
 #include "cohesion_model_base.h"
 #include "capbridge_liggghts_settings.h"
+#include "capbridge_liggghts_checks.h"
 #include "capbridge_liggghts_laws.h"
 #include "capbridge_liggghts_liquid.h"
 #include "capbridge_liggghts_protocols.h"
 #include "capbridge_liggghts_reach.h"
 #include "capbridge_liggghts_timestep.h"
+#include "capbridge_liggghts_viscous.h"
 #include "capbridge.h"
 #include "global_properties.h"
 #include "fix_property_atom.h"
@@ -96,9 +99,6 @@ namespace MODEL_PARAMS
 
 namespace capbridge_liggghts
 {
-    /* false for NaN and infinities (std::isfinite is C++11) */
-    inline bool is_finite(const double x) { return x == x && x - x == 0.0; }
-
     /* A pair formed in this pass under Protocol 2: finished in endPass(). */
     struct Candidate {
         double *history;
@@ -176,6 +176,7 @@ namespace ContactModels {
       // on/off as words: LIGGGHTS's own on/off reader reads past the end of the command
       // when the keyword is its last word (std::string from NULL: SIGABRT)
       register_word(settings, "tally", "off", &check_on_off, tally_word_, NULL, input);
+      register_word(settings, "viscous", "off", &check_on_off, viscous_word_, NULL, input);
       protocols_.register_settings(settings, input);
       register_removed(settings, "capillary_friction",
                        "cohesion model capillary: keyword 'capillary_friction' was removed: the "
@@ -230,10 +231,13 @@ namespace ContactModels {
       }
       ntypes_ = registry.max_type();
 
-      check_properties();
+      capbridge_liggghts::check_properties(error, surface_tension_, contact_angle_,
+                                           per_atom_liquid_ ? NULL : bridge_volume_, ntypes_);
       const capbridge_liggghts::LawWords words = {model_, law_name_, rupture_, overlap_,
                                                   validity_, law_keywords_};
-      laws_.build(error, words, surface_tension_, contact_angle_, ntypes_);
+      if (viscous_word_ == "on") viscous_.connect(registry, error, ntypes_);
+      laws_.build(error, words, surface_tension_, contact_angle_, viscous_.viscosity,
+                  viscous_.min_gap, ntypes_);
       connect_per_atom();
       const capbridge_liggghts::ReachLaws laws = {&laws_.laws, &laws_.pair_law, ntypes_,
                                                   law_name_.c_str(),
@@ -253,7 +257,8 @@ namespace ContactModels {
       if (!updating_) return;
       // the census passes: setup and re-neighboring (when atoms may have left or come)
       const bool census = update->setupflag || neighbor->ago == 0;
-      if (neighbor->ago == 0) check_periodic_images();    // the box as the list was built
+      if (neighbor->ago == 0)  // the box as the list was built
+        capbridge_liggghts::check_periodic_images(domain, neighbor, error);
       census_ = census;
       counting_ = per_atom_liquid_ && census;
       timing_ = census && timestep_.wanted();
@@ -285,7 +290,7 @@ namespace ContactModels {
       if (census_) reach_.report_beyond();
       if (timing_)
         timestep_.finish(laws_.laws, laws_.pair_law,
-                         per_atom_liquid_ ? NULL : bridge_volume_);
+                         per_atom_liquid_ ? NULL : bridge_volume_, viscous_.viscosity != NULL);
     }
 
     /* a bridge that exists after this pass's transitions, in a census pass */
@@ -333,6 +338,8 @@ namespace ContactModels {
         apply(capillary, en, i_forces, j_forces);
         scdata.has_force_update = true;
       }
+      if (viscous_.viscosity && gap > 0.0 && viscous_force(scdata, gap, en, i_forces, j_forces))
+        scdata.has_force_update = true;
     }
 
   private:
@@ -419,6 +426,22 @@ namespace ContactModels {
         check(cb_bridge_force(law, ra, rb, gap, &bridge, &capillary), "force", d, gap,
               bridge.volume);
       return capillary;
+    }
+
+    /* viscous on: the viscous force of the pair's bridge (after this pass's transitions), if
+     * it holds one and its law has a viscosity; whether there was one */
+    bool viscous_force(SurfacesCloseData & d, const double gap, const double *en,
+                       ForceData & i_forces, ForceData & j_forces)
+    {
+      cb_bridge bridge;
+      std::memcpy(&bridge, &d.contact_history[history_offset_], sizeof bridge);
+      const cb_law *law = laws_.of(d.itype, d.jtype);
+      if (bridge.active == 0.0 || !(law->viscosity > 0.0)) return false;
+      const bool swap = d.radj < d.radi;  // the core's order, as in pair_force
+      check(viscous_.add(law, d, atom, swap ? d.radj : d.radi, swap ? d.radi : d.radj, gap,
+                         bridge.volume, en, i_forces, j_forces),
+            "viscous force", d, gap, bridge.volume);
+      return true;
     }
 
     /* Protocols 2, 3: a dry pair in contact where either particle has free liquid forms a
@@ -598,28 +621,6 @@ namespace ContactModels {
 
     /* ---------------------------------------------------------------- errors */
 
-    /* The contact history, and with it every bridge, is kept per pair of atom IDs: in a
-     * periodic box narrower than twice the neighbor cutoff two atoms can meet as two
-     * periodic images, each with a copy of their bridge, creating or destroying liquid.
-     * The widths and the rule are the core's (cb_cell_widths, cb_periodic_too_narrow). */
-    void check_periodic_images()
-    {
-      double width[3];
-      cb_cell_widths(domain->h_inv, width);
-      const int periodic[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
-      const double cutoff = neighbor->cutneighmax;
-      const int d = cb_periodic_too_narrow(width, periodic, cutoff);
-      if (d < 0) return;
-      char text[480];
-      snprintf(text, sizeof text,
-               "cohesion model capillary: the periodic box is %g wide along %c, less than "
-               "twice the neighbor cutoff %g: two atoms would meet as two periodic images, "
-               "each holding a copy of their bridge.  Make the box at least %g wide along "
-               "%c (or lower the neighbor skin)",
-               width[d], "xyz"[d], cutoff, 2.0 * cutoff, "xyz"[d]);
-      fail_all(text);
-    }
-
     void fail_all(const std::string &message)
     {
       error->all(FLERR, message.c_str());
@@ -657,48 +658,6 @@ namespace ContactModels {
     }
 
     /* ---------------------------------------------------------------- set-up */
-
-    void check_properties()
-    {
-      char text[512];
-      if (!(surface_tension_ > 0.0) || !capbridge_liggghts::is_finite(surface_tension_)) {
-        snprintf(text, sizeof text,
-                 "cohesion model capillary: surfaceTension = %g N/m; it must be > 0 "
-                 "(fix property/global surfaceTension scalar VALUE)",
-                 surface_tension_);
-        error->all(FLERR, text);
-      }
-      for (int t = 1; t <= ntypes_; ++t) {
-        const double degrees = contact_angle_[t] * 180.0 / M_PI;
-        if (!(contact_angle_[t] >= 0.0 && contact_angle_[t] < 0.5 * M_PI)) {
-          snprintf(text, sizeof text,
-                   "cohesion model capillary: contactAngle of atom type %d is %g degrees; "
-                   "it must satisfy 0 <= contactAngle < 90",
-                   t, degrees);
-          error->all(FLERR, text);
-        }
-      }
-      if (!per_atom_liquid_) {
-        for (int a = 1; a <= ntypes_; ++a)
-          for (int b = 1; b <= ntypes_; ++b) {
-            const double v = bridge_volume_[a][b];
-            if (!(v >= 0.0) || !capbridge_liggghts::is_finite(v)) {
-              snprintf(text, sizeof text,
-                       "cohesion model capillary: bridgeVolume for atom types %d %d is %g "
-                       "m^3; it must be >= 0 (0: the pair stays dry)",
-                       a, b, v);
-              error->all(FLERR, text);
-            }
-            if (v != bridge_volume_[b][a]) {
-              snprintf(text, sizeof text,
-                       "cohesion model capillary: bridgeVolume must be symmetric; types %d %d "
-                       "give %g, types %d %d give %g",
-                       a, b, v, b, a, bridge_volume_[b][a]);
-              error->all(FLERR, text);
-            }
-          }
-      }
-    }
 
     /* the per-atom arrays of the model exist from the pair_style command on, so that dumps
      * and computes defined before the first run can refer to them */
@@ -759,6 +718,7 @@ namespace ContactModels {
     // every law's own keywords (register_word binds to them: never resized)
     std::vector<capbridge_liggghts::LawKeywordWord> law_keywords_;
     std::string tally_word_;  // on/off
+    std::string viscous_word_;  // on/off: the bridges' viscous force (ViscousForce)
     bool tally_;
     bool per_atom_liquid_;  // Protocols 1, 2, 3: the liquid in freeLiquid and the bridges
     cb_model model_;
@@ -781,6 +741,7 @@ namespace ContactModels {
     capbridge_liggghts::Reach reach_;
     capbridge_liggghts::TimestepCheck timestep_;
     capbridge_liggghts::Protocols protocols_;
+    capbridge_liggghts::ViscousForce viscous_;
   };
 }
 }
