@@ -182,6 +182,21 @@ CASES = [
     ("removal request and keyword remove", ALL + "\n" + FREE + "\n" + REQUEST % "0.5 7",
      "capillary law willett liquid protocol2 remove 0.5 remove_seed 7", "off",
      ["capillaryRemove", "keyword 'remove' are both given", "give the removal once"]),
+    # viscous on: its two properties, checked like the others
+    ("viscous on without liquidViscosity", ALL, "capillary law willett viscous on", "off",
+     ["liquidViscosity"]),
+    ("negative liquidViscosity",
+     ALL + "\nfix m9 all property/global liquidViscosity peratomtypepair 1 -0.1"
+     "\nfix m10 all property/global viscousMinGap peratomtypepair 1 1e-7",
+     "capillary law willett viscous on", "off", ["liquidViscosity", "-0.1", ">= 0"]),
+    ("viscousMinGap 0 with a viscosity",
+     ALL + "\nfix m9 all property/global liquidViscosity peratomtypepair 1 0.5"
+     "\nfix m10 all property/global viscousMinGap peratomtypepair 1 0",
+     "capillary law willett viscous on", "off", ["viscousMinGap", "> 0", "0.5 Pa s"]),
+    ("viscous with another word", ALL, "capillary law willett viscous yes", "off",
+     ["viscous 'yes'", "allowed: on, off"]),
+    ("viscous as the last word", ALL, "capillary law willett viscous", "off",
+     ["keyword 'viscous' needs a value", "allowed: on, off"]),
     ("volume outside the validity, validity strict",
      "\n".join([GAMMA, THETA, "fix m8 all property/global bridgeVolume peratomtypepair 1 1e-8"]),
      "capillary law willett validity strict", "off",

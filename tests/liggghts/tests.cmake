@@ -115,6 +115,12 @@ add_test(NAME liggghts_remove
 add_test(NAME liggghts_remove_later
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/remove_later.py ${CAPBRIDGE_LIGGGHTS_ENV}
                  --workdir ${_liggghts_work}/remove_later)
+# the bridge's viscous force (viscous on) against the core's coefficients (capbridge force),
+# normal, tangential with spin, torque; 1 and 2 ranks; the time-step warning
+add_test(NAME liggghts_viscous
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/viscous.py
+                 $<TARGET_FILE:capbridge_cli> ${CAPBRIDGE_LIGGGHTS_ENV}
+                 --workdir ${_liggghts_work}/viscous)
 set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts_bad_input
                      liggghts_friction liggghts_held liggghts_beyond_reach
                      liggghts_easo_comparison liggghts_between_runs
@@ -122,4 +128,5 @@ set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts
                      liggghts_timestep liggghts_protocols liggghts_protocol1_reference
                      liggghts_protocols_restart liggghts_protocol3_receiver
                      liggghts_corrupt_restart liggghts_remove liggghts_remove_later
+                     liggghts_viscous
                      PROPERTIES LABELS "liggghts" TIMEOUT 600)
