@@ -121,6 +121,11 @@ add_test(NAME liggghts_viscous
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/viscous.py
                  $<TARGET_FILE:capbridge_cli> ${CAPBRIDGE_LIGGGHTS_ENV}
                  --workdir ${_liggghts_work}/viscous)
+# the viscous force of ours and of easo/capillary/viscous on one motion, each against its
+# formula (the page doc/easo_viscous.md: easo_viscous.py --output)
+add_test(NAME liggghts_easo_viscous
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/easo_viscous.py ${CAPBRIDGE_LIGGGHTS_ENV}
+                 --workdir ${_liggghts_work}/easo_viscous)
 set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts_bad_input
                      liggghts_friction liggghts_held liggghts_beyond_reach
                      liggghts_easo_comparison liggghts_between_runs
@@ -128,5 +133,5 @@ set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts
                      liggghts_timestep liggghts_protocols liggghts_protocol1_reference
                      liggghts_protocols_restart liggghts_protocol3_receiver
                      liggghts_corrupt_restart liggghts_remove liggghts_remove_later
-                     liggghts_viscous
+                     liggghts_viscous liggghts_easo_viscous
                      PROPERTIES LABELS "liggghts" TIMEOUT 600)
