@@ -647,24 +647,28 @@ cb_status cb_protocol1_distribute(const cb_law *law, size_t n, const double *r1,
 
 /* --------------------------------------------- exact Laplace-Young solver */
 
-/* An axisymmetric, gravity-free bridge between two spheres.
+/* An axisymmetric, gravity-free bridge between two spheres, or between a sphere and a
+ * plane (r2 = INFINITY: the limit of a sphere 2 of infinite radius; a wall).
  * pressure is p_liquid - p_gas (negative: suction). The axial force is the first integral
  * F = 2 pi gamma y cos(phi) - pi y^2 pressure, evaluated at three places as a check. */
 typedef struct cb_exact_bridge {
     double gap;
     double force;            /* attractive > 0 [N] (the value at the neck) */
     double force_contact1;   /* the same force at the contact line on sphere 1 */
-    double force_contact2;   /* ... and on sphere 2 */
+    double force_contact2;   /* ... and on surface 2 (sphere 2 or the plane) */
     double filling_angle1;   /* delta_1 [rad] */
-    double filling_angle2;   /* delta_2 [rad] */
+    double filling_angle2;   /* delta_2 [rad]; 0 on a plane */
+    double contact_radius1;  /* radius of the contact line on sphere 1 [m], r1 sin delta_1 */
+    double contact_radius2;  /* ... on surface 2 */
     double pressure;         /* p_liquid - p_gas [Pa] */
     double neck_radius;      /* smallest radius of the profile [m] */
     double volume;           /* volume recovered from the profile [m^3] */
 } cb_exact_bridge;
 
 typedef struct cb_exact_problem {
-    double r1, r2;           /* radii [m] */
-    double contact_angle;    /* [rad], 0 <= theta < pi/2 */
+    double r1, r2;           /* radii [m]; r2 = INFINITY: surface 2 is a plane */
+    double contact_angle1;   /* on sphere 1 [rad], 0 <= theta < pi/2 */
+    double contact_angle2;   /* on surface 2 [rad], 0 <= theta < pi/2 */
     double surface_tension;  /* [N/m] */
     double volume;           /* [m^3] */
     int steps;               /* integration steps along the profile: 0 (the default,

@@ -1,4 +1,4 @@
-/* laplace_young.c — the exact Laplace-Young bridge between two spheres (public API):
+/* laplace_young.c — the exact Laplace-Young bridge between two spheres or a sphere and a plane (public API):
  * input checks, nondimensionalisation by R_h (gamma = 1), and the bridge as reported.
  * The method is in ly_profile.c (shooting), ly_newton.c and ly_branch.c (continuation). */
 #include "capbridge.h"
@@ -12,19 +12,30 @@
  * (distance = R_h * fold) may move it by an ulp. */
 #define FOLD_SLACK 1e-12
 
+static int is_plane(const cb_exact_problem *p) { return p->r2 == INFINITY; }
+
+/* The unit of length, R_h = 2 r1 r2 / (r1 + r2); on a plane its limit 2 r1. */
+static double unit_length(const cb_exact_problem *p)
+{
+    return is_plane(p) ? 2.0 * p->r1 : cb_radius_harmonic(p->r1, p->r2);
+}
+
+static int angle_in_range(double theta) { return theta >= 0.0 && theta < 0.5 * CB_PI; }
+
 static cb_status check_problem(const cb_exact_problem *p)
 {
-    if (!isfinite(p->r1) || !isfinite(p->r2) || !isfinite(p->contact_angle)
+    if (!isfinite(p->r1) || !(isfinite(p->r2) || is_plane(p))
+        || !isfinite(p->contact_angle1) || !isfinite(p->contact_angle2)
         || !isfinite(p->surface_tension) || !isfinite(p->volume))
         return CB_ERR_NOT_FINITE;
     if (p->r1 <= 0.0 || p->r2 <= 0.0 || p->surface_tension <= 0.0 || p->volume <= 0.0)
         return CB_ERR_NEGATIVE;
-    if (p->contact_angle < 0.0 || p->contact_angle >= 0.5 * CB_PI)
+    if (!angle_in_range(p->contact_angle1) || !angle_in_range(p->contact_angle2))
         return CB_ERR_RANGE;
     if (p->steps < 0 || (p->steps > 0 && p->steps < CB_EXACT_MIN_STEPS) || p->steps > CB_EXACT_MAX_STEPS)
         return CB_ERR_RANGE;
     /* the problem is solved in units of R_h: V / R_h^3 must be a number */
-    double rh = cb_radius_harmonic(p->r1, p->r2);
+    double rh = unit_length(p);
     double scaled_volume = p->volume / (rh * rh * rh);
     if (!(rh > 0.0 && scaled_volume > 0.0 && scaled_volume <= DBL_MAX))
         return CB_ERR_RANGE;
@@ -42,10 +53,12 @@ static cb_status check_gap(double gap)
 static ly_geometry make_geometry(const cb_exact_problem *p, double *unit)
 {
     ly_geometry g;
-    double rh = cb_radius_harmonic(p->r1, p->r2);
+    double rh = unit_length(p);
     g.r1 = p->r1 / rh;
-    g.r2 = p->r2 / rh;
-    g.theta = p->contact_angle;
+    g.r2 = p->r2 / rh; /* INFINITY for the plane */
+    g.plane = is_plane(p);
+    g.theta1 = p->contact_angle1;
+    g.theta2 = p->contact_angle2;
     g.volume = p->volume / (rh * rh * rh);
     g.steps = p->steps > 0 ? p->steps : CB_EXACT_DEFAULT_STEPS;
     *unit = rh;
@@ -55,7 +68,8 @@ static ly_geometry make_geometry(const cb_exact_problem *p, double *unit)
 static int bridge_finite(const cb_exact_bridge *b)
 {
     return isfinite(b->force) && isfinite(b->force_contact1) && isfinite(b->force_contact2) &&
-           isfinite(b->pressure) && isfinite(b->neck_radius) && isfinite(b->volume);
+           isfinite(b->pressure) && isfinite(b->neck_radius) && isfinite(b->volume) &&
+           isfinite(b->contact_radius1) && isfinite(b->contact_radius2);
 }
 
 /* The reported bridge of branch point z, in SI units: forces scale with gamma R_h,
@@ -71,10 +85,14 @@ static cb_status make_bridge(const ly_geometry *g, const double z[LY_NVAR], doub
         return CB_ERR_NO_CONVERGENCE;
     out.gap = gap;
     out.force = gamma * unit * p.neck_force;
-    out.force_contact1 = gamma * unit * ly_contact_force(g->r1, z[LY_DELTA1], g->theta, pressure);
-    out.force_contact2 = gamma * unit * ly_contact_force(g->r2, z[LY_DELTA2], g->theta, pressure);
+    out.force_contact1 = gamma * unit * ly_contact_force(g->r1, z[LY_DELTA1], g->theta1, pressure);
+    out.force_contact2 = gamma * unit *
+                         (g->plane ? ly_plane_contact_force(z[LY_DELTA2], g->theta2, pressure)
+                                   : ly_contact_force(g->r2, z[LY_DELTA2], g->theta2, pressure));
     out.filling_angle1 = z[LY_DELTA1];
-    out.filling_angle2 = z[LY_DELTA2];
+    out.filling_angle2 = g->plane ? 0.0 : z[LY_DELTA2];
+    out.contact_radius1 = unit * g->r1 * sin(z[LY_DELTA1]);
+    out.contact_radius2 = unit * ly_contact_radius2(g, z);
     out.pressure = gamma * pressure / unit;
     out.neck_radius = unit * p.neck_radius;
     out.volume = unit * unit * unit * p.volume;

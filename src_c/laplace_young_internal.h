@@ -5,14 +5,18 @@
  * negative = suction), a force is F / (gamma R_h) and a volume V / R_h^3.
  *
  * Geometry (axis x along the line of centres): sphere 1 (radius r1) has its centre at
- * x = -r1, sphere 2 (r2) at x = gap + r2. The meridian profile y(s) >= 0 is parametrised
- * by its arc length s from the contact line on sphere 1, with tangent angle phi from +x:
+ * x = -r1, sphere 2 (r2) at x = gap + r2, or, for a plane (the limit r2 -> infinity), the
+ * plane is x = gap. The meridian profile y(s) >= 0 is parametrised by its arc length s
+ * from the contact line on sphere 1, with tangent angle phi from +x:
  *     x' = cos phi,  y' = sin phi,  phi' = cos(phi) / y - P.
  * First integral: F = 2 pi y cos(phi) - pi y^2 P, the attractive axial force.
+ * The liquid meets sphere 1 at the contact angle theta1 and surface 2 at theta2.
  *
  * A branch point is z = (delta1, delta2, P, S, gap): the two filling angles, the pressure,
- * the profile length and the gap. The shooting residuals of z are the mismatch of the
- * integrated end point with the contact line on sphere 2 (x, y, phi) and of the volume. */
+ * the profile length and the gap; for a plane, delta2 holds the radius of the contact line
+ * on the plane instead (a length: a filling angle of the plane would be 0). The shooting
+ * residuals of z are the mismatch of the integrated end point with the contact line on
+ * surface 2 (x, y, phi) and of the volume. */
 #ifndef LAPLACE_YOUNG_INTERNAL_H
 #define LAPLACE_YOUNG_INTERNAL_H
 
@@ -23,8 +27,11 @@ enum { LY_RES_X = 0, LY_RES_Y, LY_RES_PHI, LY_RES_VOLUME, LY_NRES };
 
 /* The nondimensional problem. */
 typedef struct ly_geometry {
-    double r1, r2;   /* radii / R_h */
-    double theta;    /* contact angle [rad] */
+    double r1, r2;   /* radii / R_h; r2 = INFINITY for a plane */
+    int plane;       /* surface 2 is the plane x = gap (then z[LY_DELTA2] is its contact
+                      * line's radius) */
+    double theta1;   /* contact angle on sphere 1 [rad] */
+    double theta2;   /* ... on surface 2 */
     double volume;   /* V / R_h^3 */
     int steps;       /* RK4 steps along the profile */
 } ly_geometry;
@@ -49,6 +56,13 @@ int ly_shoot(const ly_geometry *g, const double z[LY_NVAR], int with_jacobian,
 /* The contact-line force on sphere i (Weigert/Pietsch-Rumpf form):
  * 2 pi r sin(delta) sin(delta + theta) - pi r^2 sin^2(delta) P. */
 double ly_contact_force(double radius, double delta, double theta, double pressure);
+
+/* The same on the plane, its contact line of radius y: 2 pi y sin(theta) - pi y^2 P (the
+ * limit r -> infinity at r sin(delta) = y). */
+double ly_plane_contact_force(double y, double theta, double pressure);
+
+/* The radius of the contact line on surface 2 of branch point z. */
+double ly_contact_radius2(const ly_geometry *g, const double z[LY_NVAR]);
 
 /* A circle-arc (toroidal) guess of the bridge at gap 0 with filling angle delta1. */
 void ly_toroidal_guess(const ly_geometry *g, double delta1, double z[LY_NVAR]);

@@ -124,8 +124,8 @@ static cb_status fill_node(struct cb_table *table, int i, int j, cb_message *msg
     double s = ratio_node(i), v = exp(log_volume_node(j));
     double r_small = 1.0, r_large = 1.0 / s;
     double rh = cb_radius_harmonic(r_small, r_large);
-    cb_exact_problem problem = {r_small, r_large, table->contact_angle, 1.0, v * rh * rh * rh,
-                                table_solver_steps};
+    cb_exact_problem problem = {r_small, r_large, table->contact_angle, table->contact_angle,
+                                1.0, v * rh * rh * rh, table_solver_steps};
     double rupture = 0.0;
     cb_exact_bridge bridges[TABLE_GAPS];
     cb_status status = cb_exact_rupture(&problem, &rupture, &bridges[TABLE_GAPS - 1]);

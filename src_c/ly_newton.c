@@ -152,15 +152,18 @@ static int newton_step(const ly_system *sys, const double row[LY_NRES], const ly
 }
 
 /* The largest damping in (0, 1] that keeps the filling angles inside (0, pi), changing
- * by at most 0.5 rad, and the profile length positive. */
-static double step_limit(const double z[LY_NVAR], const double dz[LY_NVAR])
+ * by at most 0.5 rad, and the profile length positive; on a plane, the radius of its
+ * contact line (z[LY_DELTA2]) positive, changing by at most 0.5 R_h. */
+static double step_limit(const ly_geometry *g, const double z[LY_NVAR],
+                         const double dz[LY_NVAR])
 {
     double lambda = 1.0;
     int k;
     for (k = LY_DELTA1; k <= LY_DELTA2; ++k) {
+        int angle = !(k == LY_DELTA2 && g->plane);
         if (dz[k] < 0.0)
             lambda = fmin(lambda, (2.0 / 3.0) * z[k] / -dz[k]);
-        else if (dz[k] > 0.0)
+        else if (dz[k] > 0.0 && angle)
             lambda = fmin(lambda, (2.0 / 3.0) * (CB_PI - z[k]) / dz[k]);
         if (fabs(dz[k]) > 0.5)
             lambda = fmin(lambda, 0.5 / fabs(dz[k]));
@@ -186,7 +189,7 @@ int ly_newton(const ly_system *sys, double z[LY_NVAR], ly_profile *profile, int 
         if (!newton_step(sys, row, profile, r, dz))
             return 0;
         /* Backtracking: halve until the profile is valid and the residual decreases. */
-        for (lambda = step_limit(z, dz); lambda >= MIN_DAMPING && !accepted; lambda *= 0.5) {
+        for (lambda = step_limit(sys->geometry, z, dz); lambda >= MIN_DAMPING && !accepted; lambda *= 0.5) {
             double trial[LY_NVAR], rt[LY_NVAR];
             ly_profile pt;
             for (k = 0; k < LY_NVAR; ++k)

@@ -40,6 +40,16 @@ double ly_contact_force(double radius, double delta, double theta, double pressu
     return 2.0 * CB_PI * y * sin(delta + theta) - CB_PI * y * y * pressure;
 }
 
+double ly_plane_contact_force(double y, double theta, double pressure)
+{
+    return 2.0 * CB_PI * y * sin(theta) - CB_PI * y * y * pressure;
+}
+
+double ly_contact_radius2(const ly_geometry *g, const double z[LY_NVAR])
+{
+    return g->plane ? z[LY_DELTA2] : g->r2 * sin(z[LY_DELTA2]);
+}
+
 /* d w / dt for the profile (first STATE entries) and, when n == AUGMENTED, for its
  * sensitivities: d q / dt = S A q (+ S df/dP for P, + f for S), A = df/d(y, phi).
  * Returns 0 where the profile has reached the axis (y <= 0) or is not finite. */
@@ -98,7 +108,7 @@ static int rk4_step(double *w, int n, double h, double pressure, double length)
 }
 
 /* The start of the profile: the contact line on sphere 1, point
- * (-r1 (1 - cos delta1), r1 sin delta1), leaving at phi1 = delta1 + theta - pi/2. */
+ * (-r1 (1 - cos delta1), r1 sin delta1), leaving at phi1 = delta1 + theta1 - pi/2. */
 static void initial_state(const ly_geometry *g, double delta1, double *w, int n)
 {
     int i;
@@ -106,7 +116,7 @@ static void initial_state(const ly_geometry *g, double delta1, double *w, int n)
         w[i] = 0.0;
     w[SX] = -cap_height(g->r1, delta1);
     w[SY] = g->r1 * sin(delta1);
-    w[SPHI] = delta1 + g->theta - 0.5 * CB_PI;
+    w[SPHI] = delta1 + g->theta1 - 0.5 * CB_PI;
     if (n == AUGMENTED) {
         double *q = w + STATE * (1 + PDELTA1);
         q[SX] = -g->r1 * sin(delta1);
@@ -128,17 +138,51 @@ static double neck_radius(double force, double pressure, double y_node)
     return (y <= y_node * (1.0 + 1e-6) && y >= 0.5 * y_node) ? y : y_node;
 }
 
+/* The end of the profile on surface 2 for the unknown d2 (z[LY_DELTA2]): the contact line's
+ * x - gap, y, the angle phi the profile must arrive at, the cap of surface 2 inside the
+ * profile's volume, and their derivatives in d2. On sphere 2 (centre x = gap + r2) the
+ * point (gap + r2 (1 - cos d2), r2 sin d2) at phi = pi/2 - d2 - theta2; on the plane
+ * x = gap the point (gap, d2) at phi = pi/2 - theta2, no cap. */
+typedef struct end_target {
+    double x, y, phi, cap;
+    double dx, dy, dphi, dcap;
+} end_target;
+
+static end_target surface2_target(const ly_geometry *g, double d2)
+{
+    end_target t;
+    if (g->plane) {
+        t.x = 0.0;
+        t.y = d2;
+        t.phi = 0.5 * CB_PI - g->theta2;
+        t.cap = 0.0;
+        t.dx = 0.0;
+        t.dy = 1.0;
+        t.dphi = 0.0;
+        t.dcap = 0.0;
+        return t;
+    }
+    t.x = cap_height(g->r2, d2);
+    t.y = g->r2 * sin(d2);
+    t.phi = 0.5 * CB_PI - d2 - g->theta2;
+    t.cap = cap_volume(g->r2, d2);
+    t.dx = g->r2 * sin(d2);
+    t.dy = g->r2 * cos(d2);
+    t.dphi = -1.0;
+    t.dcap = cap_volume_derivative(g->r2, d2);
+    return t;
+}
+
 /* Residuals of z and, if asked for, their Jacobian in z (see the header). */
 static void fill_residuals(const ly_geometry *g, const double z[LY_NVAR], const double *w,
                            int with_jacobian, ly_profile *p)
 {
-    double d2 = z[LY_DELTA2], r2 = g->r2;
-    double caps = cap_volume(g->r1, z[LY_DELTA1]) + cap_volume(r2, d2);
+    end_target end = surface2_target(g, z[LY_DELTA2]);
     int i;
-    p->volume = w[SV] - caps;
-    p->residual[LY_RES_X] = w[SX] - (z[LY_GAP] + cap_height(r2, d2));
-    p->residual[LY_RES_Y] = w[SY] - r2 * sin(d2);
-    p->residual[LY_RES_PHI] = w[SPHI] - (0.5 * CB_PI - d2 - g->theta);
+    p->volume = w[SV] - cap_volume(g->r1, z[LY_DELTA1]) - end.cap;
+    p->residual[LY_RES_X] = w[SX] - (z[LY_GAP] + end.x);
+    p->residual[LY_RES_Y] = w[SY] - end.y;
+    p->residual[LY_RES_PHI] = w[SPHI] - end.phi;
     p->residual[LY_RES_VOLUME] = p->volume - g->volume;
     if (!with_jacobian)
         return;
@@ -150,10 +194,10 @@ static void fill_residuals(const ly_geometry *g, const double z[LY_NVAR], const 
         p->jacobian[i][LY_GAP] = 0.0;
     }
     p->jacobian[LY_RES_VOLUME][LY_DELTA1] -= cap_volume_derivative(g->r1, z[LY_DELTA1]);
-    p->jacobian[LY_RES_X][LY_DELTA2] = -r2 * sin(d2);
-    p->jacobian[LY_RES_Y][LY_DELTA2] = -r2 * cos(d2);
-    p->jacobian[LY_RES_PHI][LY_DELTA2] = 1.0;
-    p->jacobian[LY_RES_VOLUME][LY_DELTA2] = -cap_volume_derivative(r2, d2);
+    p->jacobian[LY_RES_X][LY_DELTA2] = -end.dx;
+    p->jacobian[LY_RES_Y][LY_DELTA2] = -end.dy;
+    p->jacobian[LY_RES_PHI][LY_DELTA2] = -end.dphi;
+    p->jacobian[LY_RES_VOLUME][LY_DELTA2] = -end.dcap;
     p->jacobian[LY_RES_X][LY_GAP] = -1.0;
 }
 
@@ -195,12 +239,14 @@ static double sinc(double x) { return fabs(x) < 1e-8 ? 1.0 - x * x / 6.0 : sin(x
 
 void ly_toroidal_guess(const ly_geometry *g, double delta1, double z[LY_NVAR])
 {
-    /* Contact points and tangent angles at gap 0, with r1 sin delta1 = r2 sin delta2. */
+    /* Contact points and tangent angles at gap 0, with the contact line on surface 2 of
+     * the radius y1 of sphere 1's (r1 sin delta1 = r2 sin delta2; on a plane, y2 = y1). */
     double y1 = g->r1 * sin(delta1);
-    double delta2 = asin(fmin(y1 / g->r2, 0.99));
-    double y2 = g->r2 * sin(delta2);
-    double x1 = -cap_height(g->r1, delta1), x2 = cap_height(g->r2, delta2);
-    double phi1 = delta1 + g->theta - 0.5 * CB_PI, phi2 = 0.5 * CB_PI - delta2 - g->theta;
+    double delta2 = g->plane ? y1 : asin(fmin(y1 / g->r2, 0.99));
+    end_target end = surface2_target(g, delta2);
+    double y2 = end.y;
+    double x1 = -cap_height(g->r1, delta1), x2 = end.x;
+    double phi1 = delta1 + g->theta1 - 0.5 * CB_PI, phi2 = end.phi;
     double turning = phi2 - phi1;
     double chord = hypot(x2 - x1, y2 - y1);
     /* A circle arc of turning angle dphi over the chord L: S = L / sinc(dphi/2); its

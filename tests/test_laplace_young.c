@@ -1,15 +1,15 @@
 /* test_laplace_young.c — the exact Laplace-Young solver (cb_exact_*) against references
  * that do not come from the solver itself:
  *   - the first integral: the force at the neck and at both contact lines must agree;
- *   - an independent re-integration of the profile from the reported filling angle and
- *     pressure, which must land on the contact line of sphere 2 at the contact angle and
- *     enclose the prescribed volume;
+ *   - an independent re-integration of the profile (ly_reintegrate.h), which must land on
+ *     the contact line of sphere 2 at the contact angle and enclose the prescribed volume;
  *   - the analytic small-volume limit at contact with its first correction (derived below);
  *   - step refinement (RK4: fourth order) and Richardson error estimates;
  *   - the fold: bridges exist just below the rupture distance, none just above;
  *   - mirror symmetry, and bad input. */
 #include "capbridge.h"
 #include "check.h"
+#include "ly_reintegrate.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -28,7 +28,7 @@ static cb_exact_problem make_problem(double r1, double r2, double theta_deg, dou
     double rh = cb_radius_harmonic(r1, r2);
     p.r1 = r1;
     p.r2 = r2;
-    p.contact_angle = degrees(theta_deg);
+    p.contact_angle1 = p.contact_angle2 = degrees(theta_deg);
     p.surface_tension = gamma;
     p.volume = v_star * rh * rh * rh;
     p.steps = 0;
@@ -40,110 +40,6 @@ static double force_disagreement(const cb_exact_bridge *b)
 {
     double scale = fmax(fabs(b->force), fabs(b->force_contact1));
     return fmax(fabs(b->force_contact1 - b->force), fabs(b->force_contact2 - b->force)) / scale;
-}
-
-/* ------------------------------------------------ independent re-integration */
-
-/* The profile in arc length: x' = cos phi, y' = sin phi, phi' = cos(phi)/y - P, and the
- * volume integrand pi y^2 cos(phi) (written here afresh, independent of ly_profile.c). */
-typedef struct profile_point {
-    double x, y, phi, volume;
-} profile_point;
-
-static profile_point profile_slope(profile_point a, double pressure)
-{
-    profile_point d;
-    d.x = cos(a.phi);
-    d.y = sin(a.phi);
-    d.phi = cos(a.phi) / a.y - pressure;
-    d.volume = PI * a.y * a.y * cos(a.phi);
-    return d;
-}
-
-static profile_point profile_axpy(profile_point a, profile_point d, double h)
-{
-    profile_point r;
-    r.x = a.x + h * d.x;
-    r.y = a.y + h * d.y;
-    r.phi = a.phi + h * d.phi;
-    r.volume = a.volume + h * d.volume;
-    return r;
-}
-
-static profile_point profile_step(profile_point a, double pressure, double h)
-{
-    profile_point k1 = profile_slope(a, pressure);
-    profile_point k2 = profile_slope(profile_axpy(a, k1, 0.5 * h), pressure);
-    profile_point k3 = profile_slope(profile_axpy(a, k2, 0.5 * h), pressure);
-    profile_point k4 = profile_slope(profile_axpy(a, k3, h), pressure);
-    profile_point r;
-    r.x = a.x + h / 6.0 * (k1.x + 2.0 * k2.x + 2.0 * k3.x + k4.x);
-    r.y = a.y + h / 6.0 * (k1.y + 2.0 * k2.y + 2.0 * k3.y + k4.y);
-    r.phi = a.phi + h / 6.0 * (k1.phi + 2.0 * k2.phi + 2.0 * k3.phi + k4.phi);
-    r.volume = a.volume + h / 6.0 * (k1.volume + 2.0 * k2.volume + 2.0 * k3.volume + k4.volume);
-    return r;
-}
-
-static double cap_volume(double r, double delta)
-{
-    double h = r * (1.0 - cos(delta));
-    return PI * h * h * (3.0 * r - h) / 3.0;
-}
-
-typedef struct reintegration {
-    double position_error; /* |end - contact point 2| / chord */
-    double angle_error;    /* |phi(end) - (pi/2 - delta2 - theta)| */
-    double volume_error;   /* relative */
-    double inside_sphere2; /* deepest point inside sphere 2 before the end / chord (<= 0: none) */
-    double max_y;          /* largest radius of the profile */
-} reintegration;
-
-/* Start on sphere 1 at the reported delta1 with phi1 = delta1 + theta - pi/2 and the
- * reported pressure, step in arc length (fine fixed steps) to the closest approach to the
- * contact point of sphere 2, refined by Newton on (p - p2) . t = 0 with a partial step. */
-static reintegration reintegrate(const cb_exact_problem *p, double gap, const cb_exact_bridge *b)
-{
-    reintegration out = {0.0, 0.0, 0.0, 0.0, 0.0};
-    double pressure = b->pressure / p->surface_tension, d1 = b->filling_angle1;
-    double d2 = b->filling_angle2, th = p->contact_angle, r1 = p->r1, r2 = p->r2;
-    double x2 = gap + r2 * (1.0 - cos(d2)), y2 = r2 * sin(d2), phi2 = 0.5 * PI - d2 - th;
-    profile_point start = {-r1 * (1.0 - cos(d1)), r1 * sin(d1), d1 + th - 0.5 * PI, 0.0};
-    profile_point a = start, nearest = start, end;
-    double chord = hypot(x2 - start.x, y2 - start.y);
-    double h = fmin(chord, fmin(start.y, y2)) / 4000.0, best = 1e300, s = 0.0;
-    long i, i_best = 0;
-    for (i = 0; i < 2000000; ++i) {
-        double distance;
-        a = profile_step(a, pressure, h);
-        distance = hypot(a.x - x2, a.y - y2);
-        if (distance < best) {
-            best = distance;
-            nearest = a;
-            i_best = i;
-        } else if (best < 1e-2 * chord && i > i_best + 100) {
-            break;
-        }
-    }
-    for (i = 0; i < 20; ++i) { /* Newton on the partial step s from the nearest node */
-        profile_point q = profile_step(nearest, pressure, s);
-        s -= (q.x - x2) * cos(q.phi) + (q.y - y2) * sin(q.phi);
-    }
-    end = profile_step(nearest, pressure, s);
-    out.position_error = hypot(end.x - x2, end.y - y2) / chord;
-    out.angle_error = fabs(end.phi - phi2);
-    out.volume_error =
-        (end.volume - cap_volume(r1, d1) - cap_volume(r2, d2)) / p->volume - 1.0;
-    /* Before the end (excluding the last 20 steps, where the profile meets the sphere),
-     * does the profile ever enter sphere 2? */
-    out.inside_sphere2 = 0.0;
-    out.max_y = start.y;
-    for (a = start, i = 0; i < i_best - 20; ++i) {
-        double depth = r2 - hypot(a.x - (gap + r2), a.y);
-        out.inside_sphere2 = fmax(out.inside_sphere2, depth / chord);
-        out.max_y = fmax(out.max_y, a.y);
-        a = profile_step(a, pressure, h);
-    }
-    return out;
 }
 
 /* ------------------------------------------------------------------- tests */
@@ -206,12 +102,14 @@ static void test_volume_and_reintegration(void)
             CHECK(r.position_error <= 1e-7);
             CHECK(r.angle_error <= 1e-7);
             CHECK(fabs(r.volume_error) <= 1e-7);
-            CHECK(r.inside_sphere2 <= 0.0);
+            CHECK(r.inside_surface2 <= 0.0);
             worst_recovered = fmax(worst_recovered, fabs(b.volume / p.volume - 1.0));
             worst_position = fmax(worst_position, r.position_error);
             worst_angle = fmax(worst_angle, r.angle_error);
             worst_volume = fmax(worst_volume, fabs(r.volume_error));
-            if (r.max_y > fmax(p.r1 * sin(b.filling_angle1), p.r2 * sin(b.filling_angle2)))
+            CHECK_REL(b.contact_radius1, p.r1 * sin(b.filling_angle1), 1e-12);
+            CHECK_REL(b.contact_radius2, p.r2 * sin(b.filling_angle2), 1e-12);
+            if (r.max_y > fmax(b.contact_radius1, b.contact_radius2))
                 ++bulges;
             if (fmax(b.filling_angle1, b.filling_angle2) > 0.5 * PI)
                 ++beyond_equator;
@@ -314,7 +212,7 @@ static void test_rupture_is_fold(void)
     for (c = 0; c < sizeof cases / sizeof cases[0]; ++c) {
         cb_exact_problem p = make_problem(cases[c][0], cases[c][1], cases[c][2], 0.07, cases[c][3]);
         cb_exact_bridge below, at, fold;
-        double d, lian = (1.0 + 0.5 * p.contact_angle) * cbrt(p.volume);
+        double d, lian = (1.0 + 0.5 * p.contact_angle1) * cbrt(p.volume);
         CHECK_STATUS(cb_exact_rupture(&p, &d, &fold), CB_OK);
         CHECK_STATUS(cb_exact_solve(&p, 0.999 * d, &below), CB_OK);
         CHECK_STATUS(cb_exact_solve(&p, d, &at), CB_OK);
@@ -383,12 +281,12 @@ static void test_laboratory_cases(void)
         p.r1 = cases[c].r1;
         p.r2 = cases[c].r2;
         p.surface_tension = cases[c].gamma;
-        p.contact_angle = degrees(cases[c].theta_deg);
+        p.contact_angle1 = p.contact_angle2 = degrees(cases[c].theta_deg);
         p.volume = cases[c].volume;
         p.steps = 0;
         rh = cb_radius_harmonic(p.r1, p.r2);
         v_star = p.volume / (rh * rh * rh);
-        willett = (1.0 + 0.5 * p.contact_angle) * (cbrt(v_star) + cbrt(v_star * v_star) / 10.0) * rh;
+        willett = (1.0 + 0.5 * p.contact_angle1) * (cbrt(v_star) + cbrt(v_star * v_star) / 10.0) * rh;
         CHECK_STATUS(cb_exact_rupture(&p, &d, NULL), CB_OK);
         gaps[0] = 0.0;
         gaps[1] = 0.5 * d;
@@ -400,7 +298,7 @@ static void test_laboratory_cases(void)
         printf("%-3s F(0) = %.5g N (%.4f of 2 pi gamma R_h cos theta), F(d/2) = %.5g N, "
                "rupture %.5g m (Willett fit %+.1f %%)\n",
                cases[c].name, b[0].force,
-               b[0].force / (2.0 * PI * p.surface_tension * rh * cos(p.contact_angle)),
+               b[0].force / (2.0 * PI * p.surface_tension * rh * cos(p.contact_angle1)),
                b[1].force, d, 100.0 * (d / willett - 1.0));
     }
 }
@@ -465,7 +363,13 @@ static void test_bad_input(void)
     p.volume = INFINITY;
     CHECK_STATUS(cb_exact_rupture(&p, &d, &b), CB_ERR_NOT_FINITE);
     p = good;
-    p.contact_angle = NAN;
+    p.contact_angle1 = NAN;
+    CHECK_STATUS(cb_exact_solve(&p, 0.0, &b), CB_ERR_NOT_FINITE);
+    p = good;
+    p.contact_angle2 = NAN;
+    CHECK_STATUS(cb_exact_solve(&p, 0.0, &b), CB_ERR_NOT_FINITE);
+    p = good;
+    p.r2 = -INFINITY; /* only +INFINITY is a surface: the plane */
     CHECK_STATUS(cb_exact_solve(&p, 0.0, &b), CB_ERR_NOT_FINITE);
     p = good;
     p.surface_tension = -INFINITY;
@@ -489,11 +393,18 @@ static void test_bad_input(void)
     CHECK_STATUS(cb_exact_curve(&p, 2, gaps, &b), CB_ERR_NEGATIVE);
 
     p = good;
-    p.contact_angle = -0.01;
+    p.contact_angle1 = -0.01;
     CHECK_STATUS(cb_exact_solve(&p, 0.0, &b), CB_ERR_RANGE);
     p = good;
-    p.contact_angle = 0.5 * PI;
+    p.contact_angle1 = 0.5 * PI;
     CHECK_STATUS(cb_exact_rupture(&p, &d, &b), CB_ERR_RANGE);
+    p = good;
+    p.contact_angle2 = 0.5 * PI;
+    CHECK_STATUS(cb_exact_rupture(&p, &d, &b), CB_ERR_RANGE);
+    p = good;
+    p.r2 = INFINITY; /* a plane, with an angle out of range on it */
+    p.contact_angle2 = -0.01;
+    CHECK_STATUS(cb_exact_solve(&p, 0.0, &b), CB_ERR_RANGE);
     p = good;
     p.steps = -1;
     CHECK_STATUS(cb_exact_solve(&p, 0.0, &b), CB_ERR_RANGE);
@@ -515,7 +426,7 @@ static int bridge_finite(const cb_exact_bridge *b)
     return isfinite(b->gap) && isfinite(b->force) && isfinite(b->force_contact1) &&
            isfinite(b->force_contact2) && isfinite(b->filling_angle1) &&
            isfinite(b->filling_angle2) && isfinite(b->pressure) && isfinite(b->neck_radius) &&
-           isfinite(b->volume);
+           isfinite(b->volume) && isfinite(b->contact_radius1) && isfinite(b->contact_radius2);
 }
 
 /* A problem whose bridge does not fit in double range in SI units is CB_ERR_RANGE, never
@@ -529,7 +440,7 @@ static void test_outside_double_range(void)
     p.r1 = 3.538242849772181e-07;
     p.r2 = 8.5204139937340906e-12;
     p.volume = 7.2530000938231181e-80;
-    p.contact_angle = 1.0072193135540297;
+    p.contact_angle1 = p.contact_angle2 = 1.0072193135540297;
     p.surface_tension = 3.6011013243704461e+283;
     p.steps = 0;
     CHECK_STATUS(cb_exact_rupture(&p, &d, &b), CB_ERR_RANGE);

@@ -421,7 +421,7 @@ static double exact_force(double r1, double r2, double theta, double v, double g
     memset(&p, 0, sizeof p);
     p.r1 = r1;
     p.r2 = r2;
-    p.contact_angle = theta;
+    p.contact_angle1 = p.contact_angle2 = theta;
     p.surface_tension = gamma_water;
     p.volume = v;
     cb_exact_bridge b;
@@ -436,7 +436,7 @@ static double exact_rupture(double r1, double r2, double theta, double v)
     memset(&p, 0, sizeof p);
     p.r1 = r1;
     p.r2 = r2;
-    p.contact_angle = theta;
+    p.contact_angle1 = p.contact_angle2 = theta;
     p.surface_tension = gamma_water;
     p.volume = v;
     double d = NAN;

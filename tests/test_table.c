@@ -52,7 +52,8 @@ static void compare(const cb_law *law, double r1, double r2, double scaled_volum
 {
     double rh = cb_radius_harmonic(r1, r2);
     double volume = scaled_volume * rh * rh * rh;
-    cb_exact_problem problem = {r1, r2, law->contact_angle, law->surface_tension, volume, 0};
+    cb_exact_problem problem = {r1, r2, law->contact_angle, law->contact_angle,
+                                law->surface_tension, volume, 0};
     double exact_rupture = 0.0, rupture = 0.0;
     cb_exact_bridge at_fold, exact;
     CHECK_STATUS(cb_exact_rupture(&problem, &exact_rupture, &at_fold), CB_OK);
@@ -81,7 +82,8 @@ static void compare_fold(const cb_law *law, double r1, double r2, double scaled_
 {
     double rh = cb_radius_harmonic(r1, r2);
     double volume = scaled_volume * rh * rh * rh;
-    cb_exact_problem problem = {r1, r2, law->contact_angle, law->surface_tension, volume, 0};
+    cb_exact_problem problem = {r1, r2, law->contact_angle, law->contact_angle,
+                                law->surface_tension, volume, 0};
     double exact_rupture = 0.0, rupture = 0.0;
     cb_exact_bridge at_fold, exact;
     CHECK_STATUS(cb_exact_rupture(&problem, &exact_rupture, &at_fold), CB_OK);
@@ -149,7 +151,7 @@ static void test_reproducers(const cb_law *law)
     if (law->contact_angle == 0.0) {
         double r1 = 2.2066053687840956e-06, r2 = 2.4682683954881332e-06;
         double volume = 3.2360160538798125e-19, gap = 7.0254533048692245e-07;
-        cb_exact_problem problem = {r1, r2, 0.0, law->surface_tension, volume, 0};
+        cb_exact_problem problem = {r1, r2, 0.0, 0.0, law->surface_tension, volume, 0};
         cb_exact_bridge exact;
         double force = 0.0;
         CHECK_STATUS(cb_exact_solve(&problem, gap, &exact), CB_OK);

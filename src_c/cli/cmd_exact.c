@@ -3,50 +3,62 @@
 #include "args.h"
 #include "commands.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
 
 static const char usage[] =
-    "usage: capbridge exact --r1 M --r2 M --volume M3 [--theta DEG] [--gamma N/m]\n"
-    "                       [--steps N] (--gap M | --curve N | --rupture)\n"
+    "usage: capbridge exact --r1 M (--r2 M | --plane) --volume M3 [--theta DEG]\n"
+    "                       [--theta2 DEG] [--gamma N/m] [--steps N]\n"
+    "                       (--gap M | --curve N | --rupture)\n"
     "\n"
-    "The exact Laplace-Young bridge between two spheres (no gravity), on the branch\n"
-    "connected to contact.\n"
-    "  --theta DEG  contact angle, 0 <= theta < 90 (default 0)\n"
-    "  --gamma N/m  surface tension, > 0 (default 0.0728)\n"
-    "  --steps N    integration steps along the profile: 0 (default: the solver's own, 256)\n"
-    "               or 16 to 1000000\n"
-    "  --gap M      the bridge at one gap, 0 <= gap <= rupture distance\n"
-    "  --curve N    N >= 2 gaps evenly spaced from 0 to the rupture distance inclusive\n"
-    "  --rupture    the bridge at the rupture distance (its gap is the distance)\n"
+    "The exact Laplace-Young bridge between two spheres, or between sphere 1 and a plane\n"
+    "(no gravity), on the branch connected to contact.\n"
+    "  --plane       surface 2 is a plane (the limit r2 -> infinity; a wall)\n"
+    "  --theta DEG   contact angle on sphere 1, 0 <= theta < 90 (default 0)\n"
+    "  --theta2 DEG  contact angle on surface 2, 0 <= theta2 < 90 (default: --theta)\n"
+    "  --gamma N/m   surface tension, > 0 (default 0.0728)\n"
+    "  --steps N     integration steps along the profile: 0 (default: the solver's own,\n"
+    "                256) or 16 to 1000000\n"
+    "  --gap M       the bridge at one gap, 0 <= gap <= rupture distance\n"
+    "  --curve N     N >= 2 gaps evenly spaced from 0 to the rupture distance inclusive\n"
+    "  --rupture     the bridge at the rupture distance (its gap is the distance)\n"
     "Prints CSV with a header:\n"
     "  gap,force,force_contact1,force_contact2,filling_angle1,filling_angle2,\n"
-    "  pressure,neck_radius,volume\n"
+    "  pressure,neck_radius,volume,contact_radius1,contact_radius2\n"
     "force [N] is the attraction at the neck, force_contact1/2 the same at the contact\n"
-    "lines (a check), filling angles in rad, pressure = p_liquid - p_gas [Pa],\n"
-    "volume the volume recovered from the profile [m^3].\n";
+    "lines (a check), filling angles in rad (filling_angle2 0 on a plane), pressure =\n"
+    "p_liquid - p_gas [Pa], volume the volume recovered from the profile [m^3], the\n"
+    "contact radii those of the contact lines on sphere 1 and surface 2 [m].\n";
 
-enum { R1, R2, VOLUME, THETA, GAMMA, STEPS, GAP, CURVE, RUPTURE, N_OPTIONS };
+enum { R1, R2, PLANE, VOLUME, THETA, THETA2, GAMMA, STEPS, GAP, CURVE, RUPTURE, N_OPTIONS };
 
 static void print_bridge(const cb_exact_bridge *b)
 {
-    double row[9] = {b->gap,            b->force,          b->force_contact1,
-                     b->force_contact2, b->filling_angle1, b->filling_angle2,
-                     b->pressure,       b->neck_radius,    b->volume};
-    cli_print_row(stdout, 9, row);
+    double row[11] = {b->gap,            b->force,          b->force_contact1,
+                      b->force_contact2, b->filling_angle1, b->filling_angle2,
+                      b->pressure,       b->neck_radius,    b->volume,
+                      b->contact_radius1, b->contact_radius2};
+    cli_print_row(stdout, 11, row);
 }
 
 static const char header[] = "gap,force,force_contact1,force_contact2,filling_angle1,"
-                             "filling_angle2,pressure,neck_radius,volume";
+                             "filling_angle2,pressure,neck_radius,volume,contact_radius1,"
+                             "contact_radius2";
 
 int cmd_exact(int argc, char **argv)
 {
     const char *name = "exact";
     cli_option options[N_OPTIONS] = {
-        CLI_OPTION_R1, CLI_OPTION_R2, CLI_OPTION_VOLUME,
-        {.name = "--theta", .kind = CLI_ANGLE, .meaning = "contact angle [degrees]",
+        CLI_OPTION_R1,
+        {.name = "--r2", .kind = CLI_POSITIVE, .meaning = "radius of sphere 2 [m]"},
+        {.name = "--plane", .kind = CLI_FLAG, .meaning = "surface 2 is a plane"},
+        CLI_OPTION_VOLUME,
+        {.name = "--theta", .kind = CLI_ANGLE, .meaning = "contact angle on sphere 1 [degrees]",
          .number = CLI_DEFAULT_THETA},
+        {.name = "--theta2", .kind = CLI_ANGLE,
+         .meaning = "contact angle on surface 2 [degrees]"},
         {.name = "--gamma", .kind = CLI_POSITIVE, .meaning = "surface tension [N/m]",
          .number = CLI_DEFAULT_GAMMA},
         {.name = "--steps", .kind = CLI_INTEGER, .meaning = "integration steps",
@@ -59,6 +71,10 @@ int cmd_exact(int argc, char **argv)
     cli_request request = {name, usage, 0, NULL, options, N_OPTIONS, NULL, NULL};
     int code;
     if (!cli_parse(&request, argc, argv, &code)) return code;
+    if (options[R2].given == options[PLANE].given)
+        return cli_usage_error(name, "give exactly one of --r2 (sphere 2's radius) and --plane "
+                               "(surface 2 a plane) (%s)",
+                               options[R2].given ? "both given" : "none given");
     int modes = options[GAP].given + options[CURVE].given + options[RUPTURE].given;
     if (modes != 1)
         return cli_usage_error(name, "give exactly one of --gap, --curve, --rupture (%s)",
@@ -72,9 +88,11 @@ int cmd_exact(int argc, char **argv)
 
     cb_exact_problem problem;
     problem.r1 = options[R1].number;
-    problem.r2 = options[R2].number;
+    problem.r2 = options[PLANE].given ? INFINITY : options[R2].number;
     problem.volume = options[VOLUME].number;
-    problem.contact_angle = options[THETA].number * CB_PI / 180.0;
+    problem.contact_angle1 = options[THETA].number * CB_PI / 180.0;
+    problem.contact_angle2 =
+        (options[THETA2].given ? options[THETA2].number : options[THETA].number) * CB_PI / 180.0;
     problem.surface_tension = options[GAMMA].number;
     problem.steps = (int)steps;
 

@@ -24,8 +24,8 @@ static void print_header(const char *set)
 /* One configuration: its rupture distance and CB_CURVE_POINTS bridges. */
 cb_status cb_reference_curve(const cb_case *c, double *rupture, cb_exact_bridge *bridges)
 {
-    cb_exact_problem problem = {c->r1, c->r2, c->contact_angle * CB_PI / 180.0,
-                                c->surface_tension, c->volume, 0};
+    const double theta = c->contact_angle * CB_PI / 180.0;
+    cb_exact_problem problem = {c->r1, c->r2, theta, theta, c->surface_tension, c->volume, 0};
     cb_status status = cb_exact_rupture(&problem, rupture, &bridges[CB_CURVE_POINTS - 1]);
     if (status != CB_OK) return status;
     double gaps[CB_CURVE_POINTS - 1];

@@ -150,6 +150,10 @@ expect 2 "exact --steps 5" "option --steps: 5 is too few: allowed 0 (the solver'
 expect 2 "exact --steps 2000000" "option --steps: 2000000 is out of range" "allowed 0 to 1000000" -- exact $G --steps 2000000 --rupture
 expect 2 "exact negative gap" "option --gap: -1e-6 must be >= 0" -- exact $G --gap -1e-6
 expect 2 "exact takes no law" "unexpected argument 'richefeu'" -- exact richefeu $G --rupture
+expect 2 "exact with --r2 and --plane" "give exactly one of --r2 (sphere 2's radius) and --plane (surface 2 a plane) (both given)" -- exact $G --plane --rupture
+expect 2 "exact with neither --r2 nor --plane" "give exactly one of --r2" "(none given)" -- exact --r1 1e-3 --volume 1e-11 --rupture
+expect 2 "exact --theta2 90" "option --theta2: 90 must satisfy 0 <= angle < 90" -- exact $G --theta2 90 --rupture
+expect 2 "exact --plane with a value" "option --plane takes no value" -- exact --r1 1e-3 --plane=1 --volume 1e-11 --rupture
 
 # replay
 printf 'a b c d e\n1e-3 1e-3 1e-11 0 0\n' >"$TMP/table"
