@@ -34,8 +34,9 @@ static const cb_bridge dry_bridge = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 
 /* A stored state is one of exactly three shapes: dry (all zero), removed (dry but rupture
  * CB_BRIDGE_REMOVED) or active {V > 0, 1, with
- * constants that a derivation can give: rupture > 0, contact force >= 0, radii > 0,
- * law constant >= 0 (0: the force is evaluated in full, always correct)}.
+ * constants that a derivation can give: rupture > 0, contact force >= 0, radii > 0 (at a
+ * plane the sum and product INFINITY, both), law constant >= 0 (0: the force is evaluated
+ * in full, always correct)}.
  * Anything else (e.g. a corrupted pair history) is an error, never silently repaired:
  * repairing it would create or lose liquid. */
 cb_status cb_bridge_check_state(const cb_bridge *b)
@@ -46,9 +47,10 @@ cb_status cb_bridge_check_state(const cb_bridge *b)
         valid = b->volume > 0.0 && b->volume <= DBL_MAX && b->rupture > 0.0 &&
                 b->rupture <= DBL_MAX && b->force_contact >= 0.0 &&
                 b->force_contact <= DBL_MAX && b->radius_sum > 0.0 &&
-                b->radius_sum <= DBL_MAX && b->radius_product > 0.0 &&
-                b->radius_product <= DBL_MAX && b->law_constant >= 0.0 &&
-                b->law_constant <= DBL_MAX;
+                b->radius_product > 0.0 &&
+                ((b->radius_sum <= DBL_MAX && b->radius_product <= DBL_MAX) ||
+                 (b->radius_sum == INFINITY && b->radius_product == INFINITY)) &&
+                b->law_constant >= 0.0 && b->law_constant <= DBL_MAX;
     else
         valid = b->active == 0.0 && b->volume == 0.0 &&
                 (b->rupture == 0.0 || b->rupture == CB_BRIDGE_REMOVED) &&
@@ -61,7 +63,7 @@ static cb_status check_inputs(const cb_law *law, double r1, double r2, double ga
                               double volume)
 {
     if (!law->prepared) return CB_ERR_RANGE;
-    if (!isfinite(r1) || !isfinite(r2) || !isfinite(gap) || !isfinite(volume))
+    if (!isfinite(r1) || !cb_finite_or_plane(r2) || !isfinite(gap) || !isfinite(volume))
         return CB_ERR_NOT_FINITE;
     if (r1 <= 0.0 || r2 <= 0.0 || volume < 0.0) return CB_ERR_NEGATIVE;
     return CB_OK;

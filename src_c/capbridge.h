@@ -268,8 +268,34 @@ cb_status cb_capillary_stiffness_bound(const cb_law *law, double r1, double r2, 
 
 /* ------------------------------------------------------------- radii */
 
-double cb_radius_harmonic(double r1, double r2);  /* 2 r1 r2 / (r1 + r2), Derjaguin */
+double cb_radius_harmonic(double r1, double r2);  /* 2 r1 r2 / (r1 + r2), Derjaguin; 2 r1 at
+                                                   * a plane */
 double cb_radius_geometric(double r1, double r2); /* sqrt(r1 r2) */
+
+/* ------------------------------------------------------ sphere-plane pairs (walls) */
+
+/* Surface 2 of a pair may be a plane, a wall: r2 = CB_PLANE (INFINITY, the limit of a
+ * sphere of infinite radius), wherever a pair's radii are given: the force laws, the
+ * rupture rules, the bridge state, the liquid protocols, the viscous force and the exact
+ * solver.  r1 is always a sphere's, finite; r2 = -INFINITY or NaN is CB_ERR_NOT_FINITE.
+ * A closed-form law has no sphere-plane form in its source (Richefeu 2007 and Gladkyy &
+ * Schwarze 2014 treat sphere pairs only): it is evaluated as the Derjaguin-equivalent pair,
+ * two spheres of radius 2 r1 (the same R_h = 2 r1, hence the same small-volume force
+ * 2 pi gamma R_h cos(theta)); the table law tabulates the exact sphere-plane bridge.  How
+ * far each is from the exact one: `capbridge report --plane`.
+ * The wall holds no liquid: a sphere-plane bridge is the grain's liquid, and all of it
+ * returns to the grain at rupture (cb_protocol2_release gives the plane no share). */
+#define CB_PLANE INFINITY
+static inline int cb_is_plane(double r2) { return r2 == INFINITY; }
+
+/* The single contact angle a law is evaluated with for a sphere-plane bridge whose two
+ * surfaces wet differently (grain angle, wall angle, each 0 <= angle < pi/2): the angle of
+ * the mean cosine, acos((cos a + cos b) / 2), exact for the force at contact in the
+ * small-volume limit (pi gamma R_h (cos a + cos b), Derjaguin) and within 1 % of the exact
+ * two-angle force at contact for V/R_h^3 <= 1e-4; the rupture distance of two angles is
+ * not a function of one angle (the exact one is shorter than either angle's at small
+ * volumes): the report gives this rule's error.  NAN for an angle outside [0, pi/2). */
+double cb_wall_contact_angle(double grain_angle, double wall_angle);
 
 /* For an engine's pair loop: true only where the gap sqrt(rsq) - radsum, as the engine
  * computes it, is > 0, so that a dry pair can be skipped with no square root (a bridge

@@ -339,6 +339,10 @@ cb_validity cb_law_validity(const cb_law *law)
 cb_pair cb_pair_make(const cb_law *law, double r1, double r2, double volume)
 {
     cb_pair pair;
+    const cb_law_ops *ops = cb_law_ops_of(law);
+    pair.plane = cb_is_plane(r2);
+    if (pair.plane && !ops->plane) /* the Derjaguin-equivalent pair (capbridge.h) */
+        r1 = r2 = 2.0 * r1;
     pair.r1 = r1;
     pair.r2 = r2;
     pair.r_small = r1 < r2 ? r1 : r2;
@@ -346,7 +350,6 @@ cb_pair cb_pair_make(const cb_law *law, double r1, double r2, double volume)
     pair.r_harmonic = cb_radius_harmonic(r1, r2);
     pair.r_geometric = cb_radius_geometric(r1, r2);
     pair.volume = volume;
-    const cb_law_ops *ops = cb_law_ops_of(law);
     if (ops->locate) ops->locate(law, &pair);
     return pair;
 }
@@ -355,7 +358,8 @@ static cb_status check_pair(const cb_law *law, double r1, double r2, double volu
 {
     if (!law) return CB_ERR_NULL;
     if (!law->prepared) return CB_ERR_RANGE;
-    if (!isfinite(r1) || !isfinite(r2) || !isfinite(volume)) return CB_ERR_NOT_FINITE;
+    if (!isfinite(r1) || !cb_finite_or_plane(r2) || !isfinite(volume))
+        return CB_ERR_NOT_FINITE;
     if (r1 <= 0.0 || r2 <= 0.0 || volume <= 0.0) return CB_ERR_NEGATIVE;
     return CB_OK;
 }
@@ -363,7 +367,10 @@ static cb_status check_pair(const cb_law *law, double r1, double r2, double volu
 static int inside_validity(const cb_law *law, const cb_pair *pair)
 {
     cb_validity v = cb_law_validity(law);
-    double r_ref = cb_radius_of(v.radius, pair->r1, pair->r2);
+    /* the pair's own conventions: at a plane those of the pair the law evaluates */
+    double r_ref = v.radius == CB_RADIUS_GEOMETRIC ? pair->r_geometric
+                   : v.radius == CB_RADIUS_LARGE   ? pair->r_large
+                                                   : pair->r_harmonic;
     double scaled_volume = pair->volume / (r_ref * r_ref * r_ref);
     return scaled_volume >= v.volume_min && scaled_volume <= v.volume_max &&
            law->contact_angle <= v.contact_angle_max &&
@@ -406,7 +413,7 @@ cb_status cb_rupture_volume(const cb_law *law, double r1, double r2, double gap,
 {
     if (!law || !volume) return CB_ERR_NULL;
     if (!law->prepared) return CB_ERR_RANGE;
-    if (!isfinite(r1) || !isfinite(r2) || !isfinite(gap)) return CB_ERR_NOT_FINITE;
+    if (!isfinite(r1) || !cb_finite_or_plane(r2) || !isfinite(gap)) return CB_ERR_NOT_FINITE;
     if (r1 <= 0.0 || r2 <= 0.0) return CB_ERR_NEGATIVE;
     if (gap <= 0.0) {
         *volume = 0.0;

@@ -2,11 +2,13 @@
  *
  * At preparation the table is built from the exact solver for the law's contact angle,
  * over the size ratio through q = sqrt(1 - R_small/R_large) (uniform in q, for s =
- * R_small/R_large in [0.1, 1]; near s = 1 the rupture distance and the force near the
+ * R_small/R_large in [0, 1], s = 0 the sphere-plane bridge of a wall, r2 = CB_PLANE, solved
+ * as such; near s = 1 the rupture distance and the force near the
  * fold change over a narrow range of s, where the symmetric bridge becomes unstable to
  * liquid shifting to one sphere (above about 30 degrees, and lower at the largest volumes;
- * the rupture distance falls there like (1 - s)^(2/3)): q spreads that range out, and 22
- * steps in q resolve it), the scaled volume v = V/R_h^3 (uniform in ln v, nodes reaching
+ * the rupture distance falls there like (1 - s)^(2/3)): q spreads that range out, and 24
+ * steps in q resolve it; in V/R_h^3 and gap/R_h the bridge tends smoothly to the plane's
+ * as s -> 0, its force like s), the scaled volume v = V/R_h^3 (uniform in ln v, nodes reaching
  * a quarter decade beyond the domain [1e-5, 1e-1] so that its edges get centred
  * stencils), and the gap through
  *     w = sqrt(1 - sqrt(gap / rupture))  in [0, 1]  (w = 1 at contact, 0 at the fold),
@@ -34,11 +36,10 @@
 
 /* The grid. Node positions are given together with the reciprocal steps the lookup
  * multiplies by, since a division on every call would cost more than the interpolation:
- *   size ratio: q = sqrt(1 - s) at q_i = q_max i / 22, q_max = sqrt(1 - 0.1);
+ *   size ratio: q = sqrt(1 - s) at q_i = i / 24 (q = 1: the plane);
  *   volume:     ln v at ln v_j = ln(10^-5.25) + j ln(10)/4 (four per decade, 10^-0.75 last). */
-enum { TABLE_RATIOS = 23, TABLE_VOLUMES = 19, TABLE_GAPS = 33 };
-static const double table_ratio_min = 0.1;      /* s = R_small / R_large */
-static const double table_ratio_nodes_per_q = 23.190036174568118; /* 22 / sqrt(0.9) */
+enum { TABLE_RATIOS = 25, TABLE_VOLUMES = 19, TABLE_GAPS = 33 };
+static const double table_ratio_nodes_per_q = 24.0;
 static const double table_volume_min = 1e-5;    /* the domain in V / R_h^3 */
 static const double table_volume_max = 1e-1;
 static const double table_log_volume_min = -11.512925464970229; /* ln 1e-5 */
@@ -49,7 +50,7 @@ static const double table_volume_nodes_per_log = 1.737177927613007; /* 4 / ln 10
 
 /* Integration steps of the exact solver for the nodes: half its default, within 1e-7 of
  * it in the rupture distance and 3e-8 in the force (against 1024 steps) at half the cost,
- * which pays for the 22 steps in q. */
+ * which pays for the 24 steps in q. */
 static const int table_solver_steps = CB_EXACT_DEFAULT_STEPS / 2;
 
 /* A force value and its w-slope as one two-lane vector (GCC and Clang vector extension;
@@ -64,7 +65,7 @@ struct cb_table {
     force_slope force[TABLE_GAPS][TABLE_RATIOS][TABLE_VOLUMES];
 };
 
-static double ratio_node(int i) /* s at node i (q ascending, s descending from 1) */
+static double ratio_node(int i) /* s at node i (q ascending, s descending from 1 to 0) */
 {
     double q = (double)i / table_ratio_nodes_per_q;
     return 1.0 - q * q;
@@ -122,7 +123,7 @@ static void monotone_slopes(const double *y, double h, double *m)
 static cb_status fill_node(struct cb_table *table, int i, int j, cb_message *msg)
 {
     double s = ratio_node(i), v = exp(log_volume_node(j));
-    double r_small = 1.0, r_large = 1.0 / s;
+    double r_small = 1.0, r_large = i == TABLE_RATIOS - 1 ? CB_PLANE : 1.0 / s;
     double rh = cb_radius_harmonic(r_small, r_large);
     cb_exact_problem problem = {r_small, r_large, table->contact_angle, table->contact_angle,
                                 1.0, v * rh * rh * rh, table_solver_steps};
@@ -141,7 +142,7 @@ static cb_status fill_node(struct cb_table *table, int i, int j, cb_message *msg
         return cb_fail(msg, status,
                        "table law: exact solver failed at size ratio %g, V/R_h^3 = %g, "
                        "theta = %g degrees: %s",
-                       1.0 / s, v, table->contact_angle * 180.0 / CB_PI,
+                       r_large, v, table->contact_angle * 180.0 / CB_PI,
                        cb_status_message(status));
     table->rupture[i][j] = rupture / (rh * cbrt(v));
     double f[TABLE_GAPS], m[TABLE_GAPS];
@@ -236,8 +237,9 @@ static void table_locate(const cb_law *law, cb_pair *pair)
     cb_table_position *p = &pair->table;
     /* V / R_h^3 with 1/R_h = (R1 + R2) / (2 R1 R2) from the radii: a division that runs
      * alongside R_h's own instead of after it (this law's cost is its chain of dependent
-     * divisions, square roots and the logarithm) */
-    double inverse_rh = (pair->r1 + pair->r2) / (2.0 * pair->r1 * pair->r2);
+     * divisions, square roots and the logarithm); 1 / (2 R1) at a plane */
+    double inverse_rh = pair->plane ? 0.5 / pair->r1
+                                    : (pair->r1 + pair->r2) / (2.0 * pair->r1 * pair->r2);
     double v = pair->volume * (inverse_rh * inverse_rh * inverse_rh);
     double log_volume = log(v);
     double clamped = log_volume < table_log_volume_min   ? table_log_volume_min
@@ -464,7 +466,7 @@ static cb_validity table_validity(const cb_law *law)
 {
     (void)law;
     cb_validity v = {table_volume_min, table_volume_max, 70.0 * CB_PI / 180.0,
-                     1.0 / table_ratio_min, CB_RADIUS_HARMONIC,
+                     HUGE_VAL, CB_RADIUS_HARMONIC,
                      "the table's range, checked against the exact solver (law_table.c)"};
     return v;
 }
@@ -475,6 +477,7 @@ const cb_law_ops cb_table_ops = {
     .validity = table_validity,
     .default_rupture = CB_RUPTURE_EXACT, /* the fold of the exact branch, tabulated */
     .tabulated = 1,
+    .plane = 1, /* the plane is the table's s = 0 */
     .own_rupture = table_rupture,
     .own_rupture_volume = table_rupture_volume,
     .prepare = table_prepare,

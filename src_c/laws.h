@@ -11,6 +11,8 @@
 
 #include "capbridge.h"
 
+#include <math.h>
+
 /* Where a pair sits in the table law's table (law_table.c): found once per call, used
  * by both its rupture distance and its force. */
 typedef struct cb_table_position {
@@ -19,9 +21,13 @@ typedef struct cb_table_position {
     double scaled_rupture;         /* rupture / R_h, interpolated */
 } cb_table_position;
 
-/* Inputs of one evaluation, with the radius conventions every law may need. */
+/* Inputs of one evaluation, with the radius conventions every law may need.  At a plane
+ * (r2 = CB_PLANE) a law whose row has no plane of its own gets the Derjaguin-equivalent
+ * pair, r1 = r2 = twice the grain's radius (capbridge.h); one that has (the table law) gets
+ * r2 = INFINITY, r_large = INFINITY, r_harmonic = 2 r1. */
 typedef struct cb_pair {
-    double r1, r2;       /* as given */
+    double r1, r2;       /* as given, or the equivalent pair's */
+    int plane;           /* surface 2 is a plane */
     double r_small, r_large;
     double r_harmonic;   /* 2 r1 r2 / (r1 + r2) */
     double r_geometric;  /* sqrt(r1 r2) */
@@ -56,6 +62,8 @@ typedef struct cb_law_ops {
     cb_rupture_rule default_rupture;            /* the rule of the law's source */
     int tabulated; /* 1: the force is interpolated in a table the law builds, not a closed
                     * form (cb_model_tabulated) */
+    int plane;     /* 1: the law evaluates a sphere-plane pair itself; 0: as the
+                    * Derjaguin-equivalent pair (cb_pair_make) */
     /* a rupture rule of the law's own (CB_RUPTURE_EXACT) and its inverse; optional */
     double (*own_rupture)(const cb_law *law, const cb_pair *pair);
     double (*own_rupture_volume)(const cb_law *law, const cb_pair *pair, double gap);
@@ -111,6 +119,9 @@ double cb_rupture_willett_unequal(const cb_law *law, const cb_pair *pair);
 double cb_rupture_volume_lian(const cb_law *law, const cb_pair *pair, double gap);
 double cb_rupture_volume_willett(const cb_law *law, const cb_pair *pair, double gap);
 double cb_rupture_volume_willett_unequal(const cb_law *law, const cb_pair *pair, double gap);
+
+/* A second radius as the core accepts it: finite, or a plane (CB_PLANE). */
+static inline int cb_finite_or_plane(double r2) { return isfinite(r2) || cb_is_plane(r2); }
 
 /* Write a formatted message if msg is not NULL; returns status for chaining. */
 cb_status cb_fail(cb_message *msg, cb_status status, const char *format, ...)

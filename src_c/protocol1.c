@@ -4,6 +4,9 @@
  *   sum over eligible pairs of V_b = V_liquid          (eq. 13)
  *   a pair is eligible when its gap does not exceed the rupture distance of the volume it
  *   would receive (condition iii; a touching or overlapping pair is always eligible).
+ * A grain-wall pair (r2 = CB_PLANE) has R = r1, the grain and its mirror image in the
+ * wall: Richefeu's protocols are for grains only, and this gives a grain on a wall the
+ * bridge it would have with an equal grain.
  *
  * Eligibility depends on alpha, and alpha on the eligible set. The rupture distance grows
  * with the volume, so pair p is eligible exactly when alpha >= alpha_p, its threshold:
@@ -47,7 +50,7 @@
  * CB_ERR_RANGE when R_g^3, their sum or a threshold overflows, or when the volume of a
  * touching pair underflows to 0 (liquid would be lost; only for absurd magnitudes).
  */
-#include "capbridge.h"
+#include "laws.h"
 
 #include <math.h>
 
@@ -119,7 +122,8 @@ static cb_status check_inputs(const cb_law *law, size_t n, const double *r1, con
     if (!isfinite(total_liquid)) return CB_ERR_NOT_FINITE;
     if (total_liquid < 0.0) return CB_ERR_NEGATIVE;
     for (size_t i = 0; i < n; ++i)
-        if (!isfinite(r1[i]) || !isfinite(r2[i]) || !isfinite(gap[i])) return CB_ERR_NOT_FINITE;
+        if (!isfinite(r1[i]) || !cb_finite_or_plane(r2[i]) || !isfinite(gap[i]))
+            return CB_ERR_NOT_FINITE;
     for (size_t i = 0; i < n; ++i)
         if (r1[i] <= 0.0 || r2[i] <= 0.0) return CB_ERR_NEGATIVE;
     return CB_OK;
@@ -130,7 +134,8 @@ static cb_status sort_pairs(const cb_law *law, size_t n, const double *r1, const
                             const double *gap, cb_protocol1_work work)
 {
     for (size_t i = 0; i < n; ++i) {
-        double rg = cb_radius_geometric(r1[i], r2[i]);
+        /* a wall pair (r2 a plane) weighs as the grain and its mirror image: R_g = r1 */
+        double rg = cb_is_plane(r2[i]) ? r1[i] : cb_radius_geometric(r1[i], r2[i]);
         double w = rg * rg * rg;
         if (!(w > 0.0) || !isfinite(w)) return CB_ERR_RANGE; /* R_g^3 under- or overflows */
         double t = 0.0;

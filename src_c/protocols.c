@@ -9,8 +9,9 @@
  *
  * The split is exact: the two shares add up to the volume with no rounding at all
  * (see split()), so liquid is neither created nor lost by splitting.
+ * A plane (r2 = CB_PLANE, a wall) holds no liquid: the grain's share is the whole volume.
  */
-#include "capbridge.h"
+#include "laws.h"
 
 #include <limits.h>
 #include <math.h>
@@ -23,6 +24,11 @@
  * Inputs must be finite with volume >= 0 and r1, r2 > 0. */
 static void split(double volume, double r1, double r2, double *share1, double *share2)
 {
+    if (cb_is_plane(r2)) { /* the wall holds no liquid */
+        *share1 = volume;
+        *share2 = 0.0;
+        return;
+    }
     /* large / (large + small) as 1 / (1 + small / large): r1 + r2 may overflow, the ratio
      * (in (0, 1]) cannot */
     if (r1 >= r2) {
@@ -39,7 +45,7 @@ static void split(double volume, double r1, double r2, double *share1, double *s
  * distinction validate first (cb_protocol2_release does). */
 double cb_protocol_share(double volume, double r1, double r2)
 {
-    if (!isfinite(volume) || !isfinite(r1) || !isfinite(r2)) return 0.0;
+    if (!isfinite(volume) || !isfinite(r1) || !cb_finite_or_plane(r2)) return 0.0;
     if (volume < 0.0 || r1 <= 0.0 || r2 <= 0.0) return 0.0;
     double share1, share2;
     split(volume, r1, r2, &share1, &share2);
@@ -59,7 +65,8 @@ cb_status cb_protocol2_release(double volume, double r1, double r2, double *free
     if (!free1 || !free2) return CB_ERR_NULL;
     /* One particle cannot be both ends: the second write would drop the first share. */
     if (free1 == free2) return CB_ERR_LIQUID;
-    if (!isfinite(volume) || !isfinite(r1) || !isfinite(r2)) return CB_ERR_NOT_FINITE;
+    if (!isfinite(volume) || !isfinite(r1) || !cb_finite_or_plane(r2))
+        return CB_ERR_NOT_FINITE;
     if (volume < 0.0 || r1 <= 0.0 || r2 <= 0.0) return CB_ERR_NEGATIVE;
     cb_status status = check_free(*free1);
     if (status == CB_OK) status = check_free(*free2);

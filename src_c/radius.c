@@ -6,7 +6,10 @@
 
 /* Derjaguin: 2 r1 r2 / (r1 + r2); the small-volume limit of the exact force at
  * contact is 2 pi gamma cos(theta) times this radius. */
-double cb_radius_harmonic(double r1, double r2) { return 2.0 * r1 * r2 / (r1 + r2); }
+double cb_radius_harmonic(double r1, double r2)
+{
+    return cb_is_plane(r2) ? 2.0 * r1 : 2.0 * r1 * r2 / (r1 + r2);
+}
 
 double cb_radius_geometric(double r1, double r2) { return sqrt(r1 * r2); }
 

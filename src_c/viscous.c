@@ -33,7 +33,7 @@
 
 static cb_status check_viscous_input(double r1, double r2, double gap, double volume)
 {
-    if (!isfinite(r1) || !isfinite(r2) || !isfinite(gap) || !isfinite(volume))
+    if (!isfinite(r1) || !cb_finite_or_plane(r2) || !isfinite(gap) || !isfinite(volume))
         return CB_ERR_NOT_FINITE;
     if (!(r1 > 0.0) || !(r2 > 0.0) || volume < 0.0) return CB_ERR_NEGATIVE;
     return CB_OK;
@@ -47,7 +47,7 @@ cb_status cb_viscous_damping(const cb_law *law, double r1, double r2, double gap
     cb_status status = check_viscous_input(r1, r2, gap, volume);
     if (status != CB_OK) return status;
     if (!(law->viscosity > 0.0) || !(volume > 0.0) || !(gap > 0.0)) return CB_OK;
-    const double reduced = r1 * r2 / (r1 + r2); /* R* */
+    const double reduced = 0.5 * cb_radius_harmonic(r1, r2); /* R*; r1 at a plane */
     const double s = gap > law->viscous_min_gap ? gap : law->viscous_min_gap;
     const double eta = law->viscosity;
     /* 1 - s/h_m, with (h_m/s)^2 = 1 + V/(pi R* s^2) */

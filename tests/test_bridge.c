@@ -261,7 +261,8 @@ static void errors(const cb_law *law)
     const double bad[] = {NAN, HUGE_VAL, -HUGE_VAL};
     for (int i = 0; i < 3; ++i) {
         expect_error(law, bad[i], r, 0.0, v, dry, CB_ERR_NOT_FINITE);
-        expect_error(law, r, bad[i], 1e-6, v, wet, CB_ERR_NOT_FINITE);
+        if (!cb_is_plane(bad[i])) /* r2 = +inf is a plane (test_wall.c) */
+            expect_error(law, r, bad[i], 1e-6, v, wet, CB_ERR_NOT_FINITE);
         expect_error(law, r, r, bad[i], v, wet, CB_ERR_NOT_FINITE);
         expect_error(law, r, r, -1e-6, bad[i], dry, CB_ERR_NOT_FINITE);
         /* any of the doubles of a stored bridge */
@@ -470,6 +471,7 @@ static void derived_constants(void)
         CHECK_STATUS(cb_bridge_set_volume(&law, bad[i], r2, v, &c), why[i]);
         CHECK(memcmp(&c, &b, sizeof c) == 0);
         double force = 3.0;
+        if (cb_is_plane(bad[i])) continue; /* r2 = +inf is a plane (test_wall.c) */
         CHECK_STATUS(cb_bridge_force(&law, r1, bad[i], 0.0, &b, &force), why[i]);
         CHECK(force == 3.0);
     }

@@ -303,12 +303,14 @@ static void test_errors(void)
         for (int i = 0; i < 3; ++i) {
             double x = bad_finite[i];
             CHECK_STATUS(cb_force(&law, x, r, v, g, &f, &df), CB_ERR_NOT_FINITE);
-            CHECK_STATUS(cb_force(&law, r, x, v, g, &f, &df), CB_ERR_NOT_FINITE);
+            if (!cb_is_plane(x)) /* r2 = +inf is a plane (test_wall.c) */
+                CHECK_STATUS(cb_force(&law, r, x, v, g, &f, &df), CB_ERR_NOT_FINITE);
             CHECK_STATUS(cb_force(&law, r, r, x, g, &f, &df), CB_ERR_NOT_FINITE);
             CHECK_STATUS(cb_force(&law, r, r, v, x, &f, &df), CB_ERR_NOT_FINITE);
             CHECK_STATUS(cb_rupture_distance(&law, x, r, v, &f), CB_ERR_NOT_FINITE);
             CHECK_STATUS(cb_rupture_distance(&law, r, r, x, &f), CB_ERR_NOT_FINITE);
-            CHECK_STATUS(cb_rupture_volume(&law, r, x, g, &f), CB_ERR_NOT_FINITE);
+            if (!cb_is_plane(x))
+                CHECK_STATUS(cb_rupture_volume(&law, r, x, g, &f), CB_ERR_NOT_FINITE);
             CHECK_STATUS(cb_rupture_volume(&law, r, r, x, &f), CB_ERR_NOT_FINITE);
         }
         double bad_positive[] = {0.0, -1e-3, -0.0};

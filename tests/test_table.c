@@ -294,6 +294,20 @@ int main(int argc, char **argv)
             double rh = cb_radius_harmonic(r1, r2);
             compare_bound(&law, r1, r2, scaled_volume * rh * rh * rh);
         }
+        /* a wall (the table's s = 0, r2 = CB_PLANE) and the size ratios 10 to 20 between
+         * its last sphere node and the plane, against the exact sphere-plane and
+         * sphere-sphere bridges */
+        for (int i = 0; i < 24; ++i) {
+            double r2 = i % 2 ? CB_PLANE : 1e-3 * (10.0 + 10.0 * next_uniform(&state));
+            double scaled_volume = exp(log(1e-5) + log(1e4) * next_uniform(&state));
+            double fraction = i % 6 < 2 ? 0.0 : next_uniform(&state);
+            compare(&law, 1e-3, r2, scaled_volume, fraction);
+            if (i % 4 < 2) compare_fold(&law, 1e-3, r2, scaled_volume, &state);
+            if (i % 8 < 2) {
+                double rh = cb_radius_harmonic(1e-3, r2);
+                compare_bound(&law, 1e-3, r2, scaled_volume * rh * rh * rh);
+            }
+        }
         test_reproducers(&law);
         test_rupture_inverse(&law);
         cb_law_release(&law);
