@@ -82,12 +82,28 @@ const char *cli_clip(cli_echo *out, const char *text, size_t length)
     return echo(out, text, length, 0);
 }
 
+int cli_second_surface(const char *command, const cli_option *r2, const cli_option *plane,
+                       double *value, int *code)
+{
+    if (r2->given == plane->given) {
+        *code = cli_usage_error(command, "give exactly one of --r2 (sphere 2's radius) and "
+                                "--plane (surface 2 a plane) (%s)",
+                                r2->given ? "both given" : "none given");
+        return 0;
+    }
+    *value = plane->given ? CB_PLANE : r2->number;
+    return 1;
+}
+
 const char *cli_describe_pair(char *buffer, size_t size, const cb_law *law, double r1,
                               double r2, double volume)
 {
-    snprintf(buffer, size, "law %s (gamma %.10g N/m, theta %.10g deg), r1 %.10g m, r2 %.10g m, "
+    char surface[48];
+    if (cb_is_plane(r2)) snprintf(surface, sizeof surface, "a plane");
+    else snprintf(surface, sizeof surface, "r2 %.10g m", r2);
+    snprintf(buffer, size, "law %s (gamma %.10g N/m, theta %.10g deg), r1 %.10g m, %s, "
              "volume %.10g m^3", cb_model_name(law->model), law->surface_tension,
-             law->contact_angle * 180.0 / CB_PI, r1, r2, volume);
+             law->contact_angle * 180.0 / CB_PI, r1, surface, volume);
     return buffer;
 }
 

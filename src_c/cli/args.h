@@ -46,7 +46,10 @@ typedef struct cli_option {
 
 /* The geometry options every law subcommand shares (SI). */
 #define CLI_OPTION_R1 {.name = "--r1", .kind = CLI_POSITIVE, .required = 1, .meaning = "radius of sphere 1 [m]"}
-#define CLI_OPTION_R2 {.name = "--r2", .kind = CLI_POSITIVE, .required = 1, .meaning = "radius of sphere 2 [m]"}
+/* Surface 2: --r2 (a sphere) or --plane (a wall, r2 = CB_PLANE), exactly one of the two
+ * (cli_second_surface). */
+#define CLI_OPTION_R2 {.name = "--r2", .kind = CLI_POSITIVE, .meaning = "radius of sphere 2 [m]"}
+#define CLI_OPTION_PLANE {.name = "--plane", .kind = CLI_FLAG, .meaning = "surface 2 is a plane"}
 #define CLI_OPTION_VOLUME {.name = "--volume", .kind = CLI_POSITIVE, .required = 1, .meaning = "liquid bridge volume [m^3]"}
 
 /* What a subcommand's command line looks like. */
@@ -97,6 +100,11 @@ int cli_status_error(const char *command, const char *what, cb_status status);
 
 /* "law L (gamma G N/m, theta T deg), r1 A m, r2 B m, volume V m^3" into buffer: the inputs
  * of a failed call, so that its message shows which of them is out of range. */
+/* r2 from the --r2 and --plane options (CB_PLANE for --plane): 1, or 0 with the usage
+ * error's exit code in *code when neither or both are given. */
+int cli_second_surface(const char *command, const cli_option *r2, const cli_option *plane,
+                       double *value, int *code);
+
 const char *cli_describe_pair(char *buffer, size_t size, const cb_law *law, double r1,
                               double r2, double volume);
 

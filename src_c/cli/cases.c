@@ -60,3 +60,24 @@ cb_case cb_grid_case(size_t index, char *name, size_t name_size)
     c.name = name;
     return c;
 }
+
+size_t cb_plane_case_count(void)
+{
+    return cb_grid_contact_angle_count * cb_grid_volume_count;
+}
+
+cb_case cb_plane_case(size_t index, char *name, size_t name_size)
+{
+    size_t v = index % cb_grid_volume_count;
+    size_t t = index / cb_grid_volume_count;
+    cb_case c;
+    c.r1 = CB_GRID_RADIUS;
+    c.r2 = CB_PLANE;
+    c.surface_tension = CB_GRID_SURFACE_TENSION;
+    c.contact_angle = cb_grid_contact_angles[t];
+    double rh = cb_radius_harmonic(c.r1, c.r2);
+    c.volume = cb_grid_volumes[v] * rh * rh * rh;
+    snprintf(name, name_size, "t%g_plane_v%.3g", cb_grid_contact_angles[t], cb_grid_volumes[v]);
+    c.name = name;
+    return c;
+}

@@ -35,4 +35,9 @@ extern const size_t cb_grid_volume_count;
 cb_case cb_grid_case(size_t index, char *name, size_t name_size);
 size_t cb_grid_case_count(void);
 
+/* The sphere-plane set (a wall, r2 = CB_PLANE): the grid's contact angles x its volumes,
+ * V / R_h^3 with R_h = 2 r1, sphere radius CB_GRID_RADIUS; names like "t10_plane_v0.001". */
+cb_case cb_plane_case(size_t index, char *name, size_t name_size);
+size_t cb_plane_case_count(void);
+
 #endif

@@ -7,23 +7,24 @@
 #include <stdio.h>
 
 static const char usage[] =
-    "usage: capbridge curve LAW [keyword value]... --r1 M --r2 M --volume M3\n"
+    "usage: capbridge curve LAW [keyword value]... --r1 M (--r2 M | --plane) --volume M3\n"
     "                       [--points N] [--from M] [--to M]\n"
     "\n"
-    "The force of LAW at N evenly spaced gaps from --from to --to inclusive.\n"
+    "The force of LAW at N evenly spaced gaps from --from to --to inclusive (--plane:\n"
+    "between sphere 1 and a plane, a wall).\n"
     "  --points N  number of gaps, >= 2 (default 21)\n"
     "  --from M    first gap (default 0)\n"
     "  --to M      last gap, > --from (default 1.05 x the law's rupture distance)\n"
     "Prints CSV with a header: gap,force,stiffness (force >= 0 is the attraction [N],\n"
     "stiffness = dF/dgap [N/m]; both 0 beyond the rupture distance).\n";
 
-enum { R1, R2, VOLUME, POINTS, FROM, TO, N_OPTIONS };
+enum { R1, R2, PLANE, VOLUME, POINTS, FROM, TO, N_OPTIONS };
 
 int cmd_curve(int argc, char **argv)
 {
     const char *name = "curve";
     cli_option options[N_OPTIONS] = {
-        CLI_OPTION_R1, CLI_OPTION_R2, CLI_OPTION_VOLUME,
+        CLI_OPTION_R1, CLI_OPTION_R2, CLI_OPTION_PLANE, CLI_OPTION_VOLUME,
         {.name = "--points", .kind = CLI_INTEGER, .meaning = "number of gaps",
          .minimum = 2, .maximum = 100000000L, .integer = 21},
         {.name = "--from", .kind = CLI_NUMBER, .meaning = "first gap [m]", .number = 0.0},
@@ -34,8 +35,12 @@ int cmd_curve(int argc, char **argv)
     int code;
     if (!cli_parse(&request, argc, argv, &code)) return code;
 
-    double r1 = options[R1].number, r2 = options[R2].number, volume = options[VOLUME].number;
+    double r1 = options[R1].number, r2 = 0.0, volume = options[VOLUME].number;
     double rupture = 0.0;
+    if (!cli_second_surface(name, &options[R2], &options[PLANE], &r2, &code)) {
+        cb_law_release(&law);
+        return code;
+    }
     cb_status status = cb_rupture_distance(&law, r1, r2, volume, &rupture);
     char inputs[256], what[320];
     cli_describe_pair(inputs, sizeof inputs, &law, r1, r2, volume);

@@ -52,8 +52,7 @@ int cmd_exact(int argc, char **argv)
     const char *name = "exact";
     cli_option options[N_OPTIONS] = {
         CLI_OPTION_R1,
-        {.name = "--r2", .kind = CLI_POSITIVE, .meaning = "radius of sphere 2 [m]"},
-        {.name = "--plane", .kind = CLI_FLAG, .meaning = "surface 2 is a plane"},
+        CLI_OPTION_R2, CLI_OPTION_PLANE,
         CLI_OPTION_VOLUME,
         {.name = "--theta", .kind = CLI_ANGLE, .meaning = "contact angle on sphere 1 [degrees]",
          .number = CLI_DEFAULT_THETA},
@@ -71,10 +70,8 @@ int cmd_exact(int argc, char **argv)
     cli_request request = {name, usage, 0, NULL, options, N_OPTIONS, NULL, NULL};
     int code;
     if (!cli_parse(&request, argc, argv, &code)) return code;
-    if (options[R2].given == options[PLANE].given)
-        return cli_usage_error(name, "give exactly one of --r2 (sphere 2's radius) and --plane "
-                               "(surface 2 a plane) (%s)",
-                               options[R2].given ? "both given" : "none given");
+    double r2 = 0.0;
+    if (!cli_second_surface(name, &options[R2], &options[PLANE], &r2, &code)) return code;
     int modes = options[GAP].given + options[CURVE].given + options[RUPTURE].given;
     if (modes != 1)
         return cli_usage_error(name, "give exactly one of --gap, --curve, --rupture (%s)",
@@ -88,7 +85,7 @@ int cmd_exact(int argc, char **argv)
 
     cb_exact_problem problem;
     problem.r1 = options[R1].number;
-    problem.r2 = options[PLANE].given ? INFINITY : options[R2].number;
+    problem.r2 = r2;
     problem.volume = options[VOLUME].number;
     problem.contact_angle1 = options[THETA].number * CB_PI / 180.0;
     problem.contact_angle2 =

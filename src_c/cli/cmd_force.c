@@ -8,10 +8,12 @@
 #include <stdio.h>
 
 static const char usage[] =
-    "usage: capbridge force LAW [keyword value]... --r1 M --r2 M --volume M3 --gap M\n"
+    "usage: capbridge force LAW [keyword value]... --r1 M (--r2 M | --plane) --volume M3\n"
+    "                       --gap M\n"
     "\n"
-    "The capillary force of LAW between spheres of radii r1, r2 holding a bridge of\n"
-    "the given volume at the given gap (surface-to-surface distance; < 0 is an overlap).\n"
+    "The capillary force of LAW between spheres of radii r1, r2 (or sphere 1 and a plane,\n"
+    "a wall: --plane) holding a bridge of the given volume at the given gap\n"
+    "(surface-to-surface distance; < 0 is an overlap).\n"
     "Prints one CSV row with a header: gap,force,stiffness,rupture_distance\n"
     "  force      attraction [N], >= 0; 0 beyond the rupture distance\n"
     "  stiffness  dF/dgap [N/m]\n"
@@ -20,13 +22,13 @@ static const char usage[] =
     "  is -viscous_normal * d(gap)/dt along the normal and -viscous_tangential * v_t\n"
     "Example: capbridge force richefeu theta 10 --r1 1e-3 --r2 5e-4 --volume 1e-11 --gap 2e-5\n";
 
-enum { R1, R2, VOLUME, GAP, N_OPTIONS };
+enum { R1, R2, PLANE, VOLUME, GAP, N_OPTIONS };
 
 int cmd_force(int argc, char **argv)
 {
     const char *name = "force";
     cli_option options[N_OPTIONS] = {
-        CLI_OPTION_R1, CLI_OPTION_R2, CLI_OPTION_VOLUME,
+        CLI_OPTION_R1, CLI_OPTION_R2, CLI_OPTION_PLANE, CLI_OPTION_VOLUME,
         {.name = "--gap", .kind = CLI_NUMBER, .required = 1,
          .meaning = "surface-to-surface distance [m], < 0 is an overlap"},
     };
@@ -35,8 +37,12 @@ int cmd_force(int argc, char **argv)
     int code;
     if (!cli_parse(&request, argc, argv, &code)) return code;
 
-    double r1 = options[R1].number, r2 = options[R2].number, volume = options[VOLUME].number;
+    double r1 = options[R1].number, r2 = 0.0, volume = options[VOLUME].number;
     double gap = options[GAP].number;
+    if (!cli_second_surface(name, &options[R2], &options[PLANE], &r2, &code)) {
+        cb_law_release(&law);
+        return code;
+    }
     double rupture = 0.0, force = 0.0, stiffness = 0.0;
     char inputs[256], what[320];
     cli_describe_pair(inputs, sizeof inputs, &law, r1, r2, volume);

@@ -249,7 +249,9 @@ int cmd_pulloff(int argc, char **argv)
 {
     const char *name = "pulloff";
     cli_option options[N_OPTIONS] = {
-        CLI_OPTION_R1, CLI_OPTION_R2, CLI_OPTION_VOLUME,
+        CLI_OPTION_R1,
+        {.name = "--r2", .kind = CLI_POSITIVE, .required = 1, .meaning = "radius of sphere 2 [m]"},
+        CLI_OPTION_VOLUME,
         {.name = "--density", .kind = CLI_POSITIVE, .meaning = "density [kg/m^3]",
          .number = 2500.0},
         {.name = "--kn", .kind = CLI_POSITIVE, .meaning = "normal stiffness [N/m]",

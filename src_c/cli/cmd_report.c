@@ -1,6 +1,8 @@
 /* cmd_report.c — `capbridge report`: every law's error against the exact Laplace-Young
  * solution (reference_data/cases.csv and grid.csv) and its cost per call, measured in
- * the same run. Prints a Markdown table; --csv writes the numbers.
+ * the same run, and at a plane (a wall: reference_data/plane.csv, where a closed-form law is
+ * its Derjaguin-equivalent pair, capbridge.h). Prints a Markdown table; --csv writes the
+ * numbers.
  * Force errors are taken at the 20 gaps 0, d/20, ... 19d/20 of each exact curve (d the
  * exact rupture distance) where the law still has a bridge; the rupture distance error
  * is |d_law - d| / d; "no bridge" counts the gaps where the law's bridge has already
@@ -120,7 +122,7 @@ static int measure_set(cb_law *law, const cb_reference_curve_data *curves, long 
 
 typedef struct law_report {
     cb_model model;
-    set_errors cases, grid;
+    set_errors cases, grid, plane;
     double ns_per_call;
 } law_report;
 
@@ -130,15 +132,19 @@ static void print_csv(FILE *out, const law_report *r, int n, double cheapest)
                  "force_rms_cases_valid,rupture_max_cases,force_max_grid,force_rms_grid,"
                  "force_max_grid_valid,force_rms_grid_valid,grid_points_valid,"
                  "rupture_max_grid,rupture_max_grid_valid,no_bridge_fraction_grid,"
-                 "worst_force_grid,ns_per_call,cost_ratio\n");
+                 "worst_force_grid,force_max_plane,force_rms_plane,rupture_max_plane,"
+                 "no_bridge_fraction_plane,worst_force_plane,ns_per_call,cost_ratio\n");
     for (int i = 0; i < n; ++i) {
-        const set_errors *c = &r[i].cases, *g = &r[i].grid;
-        fprintf(out, "%s,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%ld,%.6g,%.6g,%.6g,%s,%.4g,%.4g\n",
+        const set_errors *c = &r[i].cases, *g = &r[i].grid, *p = &r[i].plane;
+        fprintf(out, "%s,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%ld,%.6g,%.6g,%.6g,%s,"
+                     "%.6g,%.6g,%.6g,%.6g,%s,%.4g,%.4g\n",
                 cb_model_name(r[i].model), c->force_all.max, rms(&c->force_all),
                 c->force_valid.max, rms(&c->force_valid), c->rupture_all.max,
                 g->force_all.max, rms(&g->force_all), g->force_valid.max, rms(&g->force_valid),
                 g->force_valid.count, g->rupture_all.max, g->rupture_valid.max,
-                (double)g->no_bridge / (double)g->points, g->force_all.where, r[i].ns_per_call,
+                (double)g->no_bridge / (double)g->points, g->force_all.where,
+                p->force_all.max, rms(&p->force_all), p->rupture_all.max,
+                (double)p->no_bridge / (double)p->points, p->force_all.where, r[i].ns_per_call,
                 r[i].ns_per_call / cheapest);
     }
 }
@@ -153,11 +159,11 @@ static void print_markdown(const law_report *r, int n, double cheapest)
 {
     printf("| law | force error, 13 cases: max / RMS | grid, all: max / RMS | "
            "grid, inside validity: max / RMS | rupture distance error: cases / grid | "
-           "ns per call | cost vs cheapest |\n");
-    printf("|---|---|---|---|---|---|---|\n");
+           "sphere–plane: force max / RMS, rupture max | ns per call | cost vs cheapest |\n");
+    printf("|---|---|---|---|---|---|---|---|\n");
     for (int i = 0; i < n; ++i) {
-        const set_errors *c = &r[i].cases, *g = &r[i].grid;
-        char a[8][32];
+        const set_errors *c = &r[i].cases, *g = &r[i].grid, *p = &r[i].plane;
+        char a[11][32];
         percent(a[0], 32, c->force_all.max);
         percent(a[1], 32, rms(&c->force_all));
         percent(a[2], 32, g->force_all.max);
@@ -166,9 +172,13 @@ static void print_markdown(const law_report *r, int n, double cheapest)
         percent(a[5], 32, rms(&g->force_valid));
         percent(a[6], 32, c->rupture_all.max);
         percent(a[7], 32, g->rupture_all.max);
-        printf("| %s | %s / %s | %s / %s | %s / %s (%ld points) | %s / %s | %.1f | %.2f× |\n",
+        percent(a[8], 32, p->force_all.max);
+        percent(a[9], 32, rms(&p->force_all));
+        percent(a[10], 32, p->rupture_all.max);
+        printf("| %s | %s / %s | %s / %s | %s / %s (%ld points) | %s / %s | %s / %s, %s | "
+               "%.1f | %.2f× |\n",
                cb_model_name(r[i].model), a[0], a[1], a[2], a[3], a[4], a[5],
-               g->force_valid.count, a[6], a[7], r[i].ns_per_call,
+               g->force_valid.count, a[6], a[7], a[8], a[9], a[10], r[i].ns_per_call,
                r[i].ns_per_call / cheapest);
     }
 }
@@ -197,8 +207,8 @@ int cmd_report(int argc, char **argv)
         if (strcmp(argv[i], "--help") == 0) {
             printf("usage: capbridge report [--reference DIR] [--csv FILE]\n"
                    "Force and rupture-distance errors of every law against the exact\n"
-                   "Laplace-Young curves in DIR/cases.csv and DIR/grid.csv, and each law's\n"
-                   "cost per call measured in this run.\n");
+                   "Laplace-Young curves in DIR/cases.csv, DIR/grid.csv and DIR/plane.csv\n"
+                   "(a sphere and a plane), and each law's cost per call measured in this run.\n");
             return 0;
         } else if (strcmp(argv[i], "--reference") == 0 && i + 1 < argc) {
             reference_dir = argv[++i];
@@ -212,19 +222,22 @@ int cmd_report(int argc, char **argv)
         }
     }
     char path[4096];
-    if (strlen(reference_dir) + sizeof "/cases.csv" > sizeof path) {
+    if (strlen(reference_dir) + sizeof "/plane.csv" > sizeof path) {
         cli_echo shown;
         return cli_usage_error("report", "--reference %s is too long: allowed up to %zu bytes",
                                cli_quote(&shown, reference_dir, strlen(reference_dir)),
                                sizeof path - sizeof "/cases.csv");
     }
-    cb_reference_curve_data *cases = NULL, *grid = NULL;
+    cb_reference_curve_data *cases = NULL, *grid = NULL, *plane = NULL;
     snprintf(path, sizeof path, "%s/cases.csv", reference_dir);
     long case_count = cb_reference_read(path, &cases);
     snprintf(path, sizeof path, "%s/grid.csv", reference_dir);
     long grid_count = case_count < 0 ? -1 : cb_reference_read(path, &grid);
-    if (case_count < 0 || grid_count < 0) {
+    snprintf(path, sizeof path, "%s/plane.csv", reference_dir);
+    long plane_count = grid_count < 0 ? -1 : cb_reference_read(path, &plane);
+    if (case_count < 0 || grid_count < 0 || plane_count < 0) {
         free(cases);
+        free(grid);
         return 1;
     }
 
@@ -237,20 +250,23 @@ int cmd_report(int argc, char **argv)
         cb_law law;
         ok = cb_law_init(&law, r->model, 0.0728, 0.0) == CB_OK &&
              measure_set(&law, cases, case_count, &r->cases) &&
-             measure_set(&law, grid, grid_count, &r->grid);
+             measure_set(&law, grid, grid_count, &r->grid) &&
+             measure_set(&law, plane, plane_count, &r->plane);
         cb_law_release(&law);
     }
     free(cases);
     free(grid);
+    free(plane);
     if (!ok || !measure_costs(reports)) return 1;
     for (int m = 0; m < CB_MODEL_COUNT; ++m)
         if (!cb_model_tabulated((cb_model)m) && reports[m].ns_per_call < cheapest)
             cheapest = reports[m].ns_per_call;
 
-    printf("Errors against the exact Laplace-Young solution (relative, in %%), %ld cases and "
-           "%ld grid configurations x %d gaps below the fold; cost per cb_force call measured "
-           "in this run, relative to the cheapest closed-form law.\n\n",
-           case_count, grid_count, CB_CURVE_POINTS - 1);
+    printf("Errors against the exact Laplace-Young solution (relative, in %%), %ld cases, "
+           "%ld grid configurations and %ld sphere-plane ones x %d gaps below the fold; cost "
+           "per cb_force call measured in this run, relative to the cheapest closed-form "
+           "law.\n\n",
+           case_count, grid_count, plane_count, CB_CURVE_POINTS - 1);
     print_markdown(reports, CB_MODEL_COUNT, cheapest);
     if (csv_path) {
         FILE *out = fopen(csv_path, "w");

@@ -116,6 +116,10 @@ static int parse_row(reader *in, cb_reference_curve_data *row, int *point, doubl
     double value[FIELDS];
     for (int k = 1; k < FIELDS; ++k) {
         if (k == F_POINT) continue;
+        if (k == F_R2 && strcmp(field[k], "plane") == 0) { /* a wall (cmd_reference.c) */
+            value[k] = CB_PLANE;
+            continue;
+        }
         if (!cb_parse_number(field[k], &value[k]))
             return problem(in, "%s %s is not a decimal number within double range",
                            field_names[k], cli_quote(&shown, field[k], strlen(field[k])));

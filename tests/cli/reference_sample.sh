@@ -1,5 +1,6 @@
 #!/bin/sh
-# Regenerates a sample of reference_data/ with the exact solver and compares it with the
+# Regenerates a sample of reference_data/ (cases, grid, plane) with the exact solver and
+# compares it with the
 # stored rows: every number to 1e-9 relative (the solver converges far below that, so a
 # larger difference means the data or the solver changed).
 # usage: reference_sample.sh CAPBRIDGE_BINARY REFERENCE_DIR
@@ -34,3 +35,5 @@ compare cases W21
 compare cases R3
 compare grid t30_r3_v0.001
 compare grid t0_r10_v0.1
+compare plane t20_plane_v0.001
+compare plane t40_plane_v0.1

@@ -94,7 +94,7 @@ expect 2 "c not positive" "c '0'" "> 0" -- force richefeu c 0 $G --gap 0
 expect 2 "a law keyword after the options" "unexpected argument 'theta'" "right after the law name" -- force richefeu $G --gap 0 theta 10
 
 # options
-expect 2 "unknown option" "unknown option '--gapp'" "allowed --r1, --r2, --volume, --gap" -- force richefeu $G --gapp 0
+expect 2 "unknown option" "unknown option '--gapp'" "allowed --r1, --r2, --plane, --volume, --gap" -- force richefeu $G --gapp 0
 expect 2 "unknown option with =" "unknown option '--radius'" -- force richefeu --radius=1e-3 $G --gap 0
 expect 2 "option without value at the end" "option --gap needs a value" -- force richefeu $G --gap
 expect 2 "option followed by an option" "option --r1 needs a value" -- force richefeu --r1 --r2 1e-3 --volume 1e-11 --gap 0
@@ -113,6 +113,11 @@ expect 2 "option underflow" "option --gap: '1e-400' is not a decimal number with
 expect 2 "option overflow" "option --gap: '1e400' is not a decimal number within double range" -- force richefeu $G --gap 1e400
 expect 2 "missing --volume" "missing option --volume" "liquid bridge volume" -- force richefeu --r1 1e-3 --r2 1e-3 --gap 0
 expect 2 "missing --gap" "missing option --gap" -- force richefeu $G
+for cmd in force rupture curve; do
+    gap=; [ $cmd = force ] && gap="--gap 0"
+    expect 2 "$cmd with neither --r2 nor --plane" "give exactly one of --r2 (sphere 2's radius) and --plane (surface 2 a plane) (none given)" -- $cmd richefeu --r1 1e-3 --volume 1e-11 $gap
+    expect 2 "$cmd with --r2 and --plane" "give exactly one of --r2" "(both given)" -- $cmd richefeu $G --plane $gap
+done
 expect 2 "negative radius" "option --r1: -1e-3 must be > 0" -- force richefeu --r1 -1e-3 --r2 1e-3 --volume 1e-11 --gap 0
 expect 2 "zero volume" "option --volume: 0 must be > 0" -- rupture richefeu --r1 1e-3 --r2 1e-3 --volume 0
 expect 2 "option twice" "option --gap is given twice" -- force richefeu $G --gap 0 --gap 1e-5

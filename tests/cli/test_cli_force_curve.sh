@@ -79,4 +79,19 @@ close_rel "curve, force beyond rupture" "$(field "$TMP/curve" 22 2)" 0 0
     --to 2e-4 >"$TMP/curve" || fail "curve (range) exit $?"
 compare_curve "curve, --from -1e-5 --to 2e-4 --points 7" "$TMP/curve" 2e-3 1e-3 2e-11 20 -1e-5 2e-4 7
 
+# --plane (a wall): a closed-form law is its Derjaguin-equivalent pair, two spheres 2 r1, to
+# the digit; the table law's rupture distance at a plane within 2e-4 of the exact one
+for gap in 0 2e-5 1e-4; do
+    "$CB" force richefeu theta 20 --r1 1e-3 --plane --volume 1e-11 --gap $gap >"$TMP/plane" &&
+        "$CB" force richefeu theta 20 --r1 2e-3 --r2 2e-3 --volume 1e-11 --gap $gap >"$TMP/pair" ||
+        fail "force --plane at gap $gap: exit $?"
+    checks=$((checks + 1))
+    cmp -s "$TMP/plane" "$TMP/pair" || fail "force --plane at gap $gap: $(sed -n 2p "$TMP/plane") against the pair's $(sed -n 2p "$TMP/pair")"
+done
+"$CB" rupture table theta 20 --r1 1e-3 --plane --volume 1e-11 >"$TMP/table" &&
+    "$CB" exact --theta 20 --r1 1e-3 --plane --volume 1e-11 --rupture >"$TMP/exact" ||
+    fail "rupture table --plane: exit $?"
+close_rel "rupture table --plane against exact --plane" "$(sed -n 2p "$TMP/table")" \
+    "$(sed -n 2p "$TMP/exact" | cut -d, -f1)" 2e-4
+
 finish

@@ -17,9 +17,11 @@ checks=$((checks + 1))
 [ "$(sed -n 1p "$REF/cases.csv" | cut -c1-1)" = "#" ] &&
     [ "$(grep -v '^#' "$REF/cases.csv" | sed -n 1p)" = "$HEADER" ] &&
     [ "$(wc -l <"$TMP/rows")" -eq 42 ] || fail "unexpected layout of $REF/cases.csv"
+# and the first two sphere-plane curves of plane.csv (r2 written "plane")
+grep -v '^#' "$REF/plane.csv" | sed -n '2,43p' >"$TMP/plane_rows"
 
 # expect_refused LABEL NEEDLE... -- CASES_BODY_FILE: cases.csv = header + that body, grid.csv
-# the two curves unaltered
+# the two curves unaltered, plane.csv the two sphere-plane curves
 n=0
 expect_refused() {
     label=$1
@@ -35,6 +37,7 @@ $1"
     done
     { echo "$HEADER"; cat "$2"; } >"$dir/cases.csv"
     { echo "$HEADER"; cat "$TMP/rows"; } >"$dir/grid.csv"
+    { echo "$HEADER"; cat "$TMP/plane_rows"; } >"$dir/plane.csv"
     "$CB" report --reference "$dir" >"$TMP/out" 2>"$TMP/err" </dev/null
     code=$?
     checks=$((checks + 1))
@@ -102,6 +105,7 @@ if [ "$PART" = valid ]; then
 mkdir "$TMP/good"
 { echo "$HEADER"; cat "$TMP/rows"; } >"$TMP/good/cases.csv"
 cp "$TMP/good/cases.csv" "$TMP/good/grid.csv"
+{ echo "$HEADER"; cat "$TMP/plane_rows"; } >"$TMP/good/plane.csv"
 if "$CB" report --reference "$TMP/good" --csv "$TMP/good/report.csv" >"$TMP/out" 2>"$TMP/err"; then
     awk -F, '$8 == 0 { print $2, $3, $4, $5, $6, $7 }' "$TMP/rows" >"$TMP/configs"
     rupture_max=0
@@ -119,11 +123,30 @@ if "$CB" report --reference "$TMP/good" --csv "$TMP/good/report.csv" >"$TMP/out"
         force_max=$(awk -v m="$force_max" -v a="$law" -v e="$exact" \
             'BEGIN { x = (a - e) / e; if (x < 0) x = -x; printf "%.17g", (x > m ? x : m) }')
     done <"$TMP/points"
+    # at a plane, the same from the Derjaguin-equivalent pair: two spheres of radius 2 r1
+    plane_rupture_max=0
+    awk -F, '$8 == 0 { print 2 * $2, $4, $5, $6, $7 }' "$TMP/plane_rows" >"$TMP/plane_configs"
+    while read -r r gamma theta v d; do
+        law=$("$CB" rupture richefeu gamma "$gamma" theta "$theta" --r1 "$r" --r2 "$r" --volume "$v" |
+            awk -F, 'NR == 2 { print $1 }')
+        plane_rupture_max=$(awk -v m="$plane_rupture_max" -v a="$law" -v e="$d" \
+            'BEGIN { x = (a - e) / e; if (x < 0) x = -x; printf "%.17g", (x > m ? x : m) }')
+    done <"$TMP/plane_configs"
+    plane_force_max=0
+    awk -F, '$8 < 20 { print 2 * $2, $4, $5, $6, $9, $10 }' "$TMP/plane_rows" >"$TMP/plane_points"
+    while read -r r gamma theta v gap exact; do
+        law=$("$CB" force richefeu gamma "$gamma" theta "$theta" --r1 "$r" --r2 "$r" --volume "$v" --gap "$gap" |
+            awk -F, 'NR == 2 { print $2 }')
+        plane_force_max=$(awk -v m="$plane_force_max" -v a="$law" -v e="$exact" \
+            'BEGIN { x = (a - e) / e; if (x < 0) x = -x; printf "%.17g", (x > m ? x : m) }')
+    done <"$TMP/plane_points"
     richefeu=$(awk -F, '$1 == "richefeu"' "$TMP/good/report.csv")
     close_rel "valid curves: richefeu's force error" "$(echo "$richefeu" | cut -d, -f2)" "$force_max" 1e-5
     close_rel "valid curves: richefeu's rupture error" "$(echo "$richefeu" | cut -d, -f6)" "$rupture_max" 1e-5
+    close_rel "valid curves: richefeu's sphere-plane force error" "$(echo "$richefeu" | cut -d, -f16)" "$plane_force_max" 1e-5
+    close_rel "valid curves: richefeu's sphere-plane rupture error" "$(echo "$richefeu" | cut -d, -f18)" "$plane_rupture_max" 1e-5
     checks=$((checks + 1))
-    grep -q "2 cases and 2 grid configurations x 20 gaps" "$TMP/out" || fail "valid curves: $(head -1 "$TMP/out")"
+    grep -q "2 cases, 2 grid configurations and 2 sphere-plane ones x 20 gaps" "$TMP/out" || fail "valid curves: $(head -1 "$TMP/out")"
 else
     fail "valid curves: exit $? ($(cat "$TMP/err"))"
 fi
