@@ -55,6 +55,12 @@ static double time_law(const cb_law *law, const sample *s, const double *gap)
             double force = 0.0, stiffness = 0.0;
             cb_force(law, s->r1[i], s->r2[i], s->volume[i], gap[i], &force, &stiffness);
             sum += force + stiffness;
+            if (law->viscosity > 0.0) {
+                double normal = 0.0, tangential = 0.0;
+                cb_viscous_damping(law, s->r1[i], s->r2[i], gap[i], s->volume[i], &normal,
+                                   &tangential);
+                sum += normal + tangential;
+            }
         }
     }
     double elapsed = seconds_now() - start;

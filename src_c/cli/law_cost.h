@@ -8,7 +8,9 @@
  * sample of pairs inside the grid's domain (size ratio 1..10, V/R_h^3 1e-5..1e-1,
  * 0 <= gap <= the law's rupture distance). The laws take turns within every timed pass
  * and each keeps its best pass, so that the load of a shared machine falls on all of
- * them alike. Returns 0 on success, -1 when memory runs out. */
+ * them alike.  A law with a viscosity (keyword viscosity) is timed as what a bridge pays
+ * with its viscous force on: cb_force and cb_viscous_damping per call.  Returns 0 on
+ * success, -1 when memory runs out. */
 int cb_law_costs_ns(const cb_law *laws, int n, double *ns_per_call);
 
 #endif
