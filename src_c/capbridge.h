@@ -282,7 +282,7 @@ double cb_radius_geometric(double r1, double r2); /* sqrt(r1 r2) */
  * Schwarze 2014 treat sphere pairs only): it is evaluated as the Derjaguin-equivalent pair,
  * two spheres of radius 2 r1 (the same R_h = 2 r1, hence the same small-volume force
  * 2 pi gamma R_h cos(theta)); the table law tabulates the exact sphere-plane bridge.  How
- * far each is from the exact one: `capbridge report --plane`.
+ * far each is from the exact one: `capbridge report` (its sphere-plane column).
  * The wall holds no liquid: a sphere-plane bridge is the grain's liquid, and all of it
  * returns to the grain at rupture (cb_protocol2_release gives the plane no share). */
 #define CB_PLANE INFINITY
@@ -477,7 +477,8 @@ typedef struct cb_bridge {
                             * dry state 0, or CB_BRIDGE_REMOVED while the pair of a removed
                             * bridge (cb_bridge_remove) still overlaps */
     double force_contact;  /* the force at gap 0 [N] */
-    double radius_sum;     /* r1 + r2 and r1 r2 of the radii the two above are for */
+    double radius_sum;     /* r1 + r2 and r1 r2 of the radii the two above are for
+                            * (INFINITY both at a plane, r2 = CB_PLANE) */
     double radius_product;
     double law_constant;   /* the constant the law keeps for a stretched bridge (finite,
                             * >= 0): richefeu's 1/lambda (eq. 11) [1/m], so that its force
@@ -519,7 +520,8 @@ cb_status cb_bridge_force(const cb_law *law, double r1, double r2, double gap,
 /* CB_OK when a stored state is one of the three shapes the calls above and below produce:
  * dry (all zero), dry and removed (all zero but rupture = CB_BRIDGE_REMOVED) or an active
  * bridge's (volume > 0, active 1, rupture > 0, contact force
- * >= 0, radii > 0, law constant >= 0, every one finite); else CB_ERR_BRIDGE_STATE (a
+ * >= 0, radii > 0, law constant >= 0, every one finite but a plane's radius sum and product,
+ * INFINITY both); else CB_ERR_BRIDGE_STATE (a
  * corrupted pair history or restart file).  Every call above checks the state it is given
  * with it; an engine checks each stored state once where it enters (a restart file's pair
  * history at the first force pass of a run) before it uses cb_bridge_held. */
