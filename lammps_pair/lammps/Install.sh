@@ -1,14 +1,14 @@
 #!/bin/sh
-# Install.sh — build pair style gran/capillary and fix capillary/liquid into LAMMPS the
-# classic way (compiled into the LAMMPS library and binary, no plugin), for LAMMPS's
-# CMake build.
+# Install.sh — build pair style gran/capillary, fix capillary/liquid and fix capillary/wall
+# into LAMMPS the classic way (compiled into the LAMMPS library and binary, no plugin), for
+# LAMMPS's CMake build.
 #
 #   lammps_pair/lammps/Install.sh LAMMPS_DIR          copy the files in
 #   lammps_pair/lammps/Install.sh LAMMPS_DIR --remove take them out again
 #
 # LAMMPS_DIR is the top of a LAMMPS source tree (with src/ and cmake/).  Copied:
-#   src/pair_gran_capillary.{h,cpp}, src/fix_capillary_liquid.{h,cpp},  the binding (the
-#   src/capillary_*.{h,cpp}                                              list: $binding below)
+#   src/pair_gran_capillary.{h,cpp}, src/fix_capillary_{liquid,wall}.{h,cpp},  the binding
+#   src/capillary_*.{h,cpp}                                        (the list: $binding below)
 #   src/CAPBRIDGE_CORE/   the capbridge core: capbridge.h, the C99 sources (src_c/*.c) and
 #                         their internal headers, and capbridge.cmake
 # LAMMPS's CMake build compiles the .cpp files of src/ (and finds the styles in the
@@ -29,12 +29,13 @@ lammps=${1:?"usage: $0 LAMMPS_DIR [--remove]"}
     { echo "$0: '$lammps' is not a LAMMPS source tree (src/pair.h, cmake/)" >&2; exit 2; }
 binding="pair_gran_capillary.h pair_gran_capillary.cpp capillary_coeff.cpp capillary_history.cpp
          capillary_checks.cpp capillary_bridges.h capillary_bridges.cpp capillary_liquid_mode.h
-         fix_capillary_liquid.h fix_capillary_liquid.cpp capillary_protocols.cpp"
+         fix_capillary_liquid.h fix_capillary_liquid.cpp capillary_protocols.cpp
+         fix_capillary_wall.h fix_capillary_wall.cpp"
 
 if [ "${2:-}" = "--remove" ]; then
     for f in $binding; do rm -f "$lammps/src/$f"; done
     rm -rf "$lammps/src/CAPBRIDGE_CORE"
-    echo "removed gran/capillary and capillary/liquid from $lammps/src"
+    echo "removed gran/capillary, capillary/liquid and capillary/wall from $lammps/src"
     exit 0
 fi
 
@@ -62,5 +63,5 @@ function(capbridge_attach_core)
 endfunction()
 cmake_language(DEFER CALL capbridge_attach_core)
 CMAKE
-echo "installed gran/capillary and capillary/liquid into $lammps/src; configure LAMMPS with"
+echo "installed gran/capillary, capillary/liquid and capillary/wall into $lammps/src; configure LAMMPS with"
 echo "  -D CMAKE_PROJECT_lammps_INCLUDE=$lammps/src/CAPBRIDGE_CORE/capbridge.cmake"

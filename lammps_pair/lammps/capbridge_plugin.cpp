@@ -1,6 +1,6 @@
 /* ----------------------------------------------------------------------
-   capbridge — LAMMPS plugin entry: registers pair style gran/capillary and
-   fix capillary/liquid.  Load with:   plugin load /path/to/capbridgeplugin.so
+   capbridge — LAMMPS plugin entry: registers pair style gran/capillary,
+   fix capillary/liquid and fix capillary/wall.  Load with:   plugin load /path/to/capbridgeplugin.so
 ------------------------------------------------------------------------- */
 
 #include "lammpsplugin.h"
@@ -8,6 +8,7 @@
 #include "version.h"
 
 #include "fix_capillary_liquid.h"
+#include "fix_capillary_wall.h"
 #include "pair_gran_capillary.h"
 
 using namespace LAMMPS_NS;
@@ -20,6 +21,11 @@ static Pair *gran_capillary_creator(LAMMPS *lmp)
 static Fix *capillary_liquid_creator(LAMMPS *lmp, int argc, char **argv)
 {
   return new FixCapillaryLiquid(lmp, argc, argv);
+}
+
+static Fix *capillary_wall_creator(LAMMPS *lmp, int argc, char **argv)
+{
+  return new FixCapillaryWall(lmp, argc, argv);
 }
 
 // the plugin's one exported symbol (the rest of the .so is built with hidden visibility)
@@ -41,5 +47,10 @@ extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *l
   plugin.name = "capillary/liquid";
   plugin.info = "capbridge liquid bookkeeping fix (fixed volume, Richefeu protocols 1-3)";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &capillary_liquid_creator;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.name = "capillary/wall";
+  plugin.info = "capbridge liquid bridges between grains and flat walls";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &capillary_wall_creator;
   (*register_plugin)(&plugin, lmp);
 }

@@ -15,6 +15,7 @@
 #include "fix_capillary_liquid.h"
 
 #include "capillary_bridges.h"
+#include "fix_capillary_wall.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -151,7 +152,7 @@ void FixCapillaryLiquid::update_bridges()
       const double r = sqrt(rsq);
       const double gap = r - radsum;
 
-      if (bridge->active != 0.0 && removing && removal_chosen(i, j))
+      if (bridge->active != 0.0 && removing && removal_chosen(atom->tag[i], atom->tag[j]))
         remove_and_release(i, j, gap, bridge);
       else if (!cb_bridge_dry(bridge))
         advance_and_release(i, j, rsq, gap, bridge);
@@ -163,6 +164,61 @@ void FixCapillaryLiquid::update_bridges()
         candidates[i] += 1.0;
         if (newton_pair || j < nlocal) candidates[j] += 1.0;
       }
+    }
+  }
+  for (FixCapillaryWall *wall : walls) update_wall_bridges(*wall);
+}
+
+/* ----------------------------------------------------------------------
+   phase 1 for the bridges of the grains and the walls of one fix capillary/wall (owned
+   grains only: a wall bridge is its grain's): removed, held or ruptured (all the liquid
+   back to the grain, cb_protocol2_release with the plane), Protocol 3's receiver, the
+   candidates; the fix's post_force (after the pair) forms them and gives the deposit
+------------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::update_wall_bridges(FixCapillaryWall &wall)
+{
+  std::vector<FixCapillaryWall::Contact> contacts;
+  wall.contacts(contacts);
+  const double *radius = atom->radius;
+  const tagint *tag = atom->tag;
+  for (const FixCapillaryWall::Contact &c : contacts) {
+    const int i = c.atom;
+    cb_bridge *bridge = wall.bridge_at(i, c.wall);
+    const long long key = wall.wall_key(c.wall);
+    double volume = 0.0;
+    int status = CB_OK;
+    const char *what = "wall bridge update";
+    if (bridge->active != 0.0 && removing && removal_chosen(tag[i], key)) {
+      what = "wall bridge removal";
+      status = cb_bridge_remove(c.gap, bridge, &volume);
+      removed_count += 1.0;
+      removed_liquid += volume;
+    } else if (!cb_bridge_dry(bridge)) {
+      cb_transition transition;
+      status = cb_bridge_update(wall.law_of(i), radius[i], CB_PLANE, c.gap, 0.0, bridge,
+                                &transition, &volume);
+      if (transition == CB_BRIDGE_RUPTURED) bridges->n_ruptured += 1.0;
+      else volume = 0.0;
+    }
+    double share_grain = 0.0, share_wall = 0.0;
+    if (status == CB_OK && volume > 0.0) {
+      what = "wall bridge release";
+      status = cb_protocol2_release(volume, radius[i], CB_PLANE, &share_grain, &share_wall);
+    }
+    if (status != CB_OK)
+      error->one(FLERR, "fix capillary/liquid {}: {} of atom {} (radius {}) and a wall of fix "
+                 "{}: gap {}, volume {}: {}", mode_name(), what, tag[i], radius[i], wall.id,
+                 c.gap, bridge->volume, cb_status_message((cb_status) status));
+    released[i] += share_grain;
+    if (bridge->active != 0.0) {
+      if (mode == LIQUID_PROTOCOL3 &&
+          cb_protocol3_better(c.offset, key, best_height[i], best_partner[i])) {
+        best_height[i] = c.offset;
+        best_partner[i] = (tagint) key;
+      }
+    } else if (c.wet && cb_bridge_may_form(bridge, c.gap)) {
+      candidates[i] += 1.0;
     }
   }
 }
@@ -219,19 +275,19 @@ void FixCapillaryLiquid::release(int i, int j, double volume, double gap)
 
 /* ----------------------------------------------------------------------
    keyword remove (the first force evaluation after the liquid starts): is the bridge of
-   i and j among the removed fraction (cb_bridge_removal_chosen: a draw from the seed and
-   the two atom IDs, the same on every rank and for both copies of a newton-off pair)
+   the atoms (or atom and wall: FixCapillaryWall::wall_key) with IDs id1, id2 among the
+   removed fraction (cb_bridge_removal_chosen: a draw from the seed and the two IDs, the
+   same on every rank and for both copies of a newton-off pair)
 ------------------------------------------------------------------------- */
 
-int FixCapillaryLiquid::removal_chosen(int i, int j)
+int FixCapillaryLiquid::removal_chosen(long long id1, long long id2)
 {
   int chosen = 0;
   const int status = cb_bridge_removal_chosen(remove_fraction, (unsigned long long) remove_seed,
-                                              (long long) atom->tag[i],
-                                              (long long) atom->tag[j], &chosen);
+                                              id1, id2, &chosen);
   if (status != CB_OK)
-    error->one(FLERR, "fix capillary/liquid: remove {} (seed {}) for atoms {} and {}: {}",
-               remove_fraction, remove_seed, atom->tag[i], atom->tag[j],
+    error->one(FLERR, "fix capillary/liquid: remove {} (seed {}) for the bridge of IDs {} and "
+               "{} (a wall's is negative): {}", remove_fraction, remove_seed, id1, id2,
                cb_status_message((cb_status) status));
   return chosen;
 }
@@ -400,6 +456,12 @@ void FixCapillaryLiquid::count_bridges(double *out)
         liquid += bridge->volume;
       }
     }
+  }
+  for (const FixCapillaryWall *wall : walls) {
+    double wall_count = 0.0, wall_liquid = 0.0;
+    wall->census(wall_count, wall_liquid);
+    count += wall_count;
+    liquid += wall_liquid;
   }
   out[0] = count;
   out[1] = liquid;

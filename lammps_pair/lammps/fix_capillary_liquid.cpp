@@ -28,6 +28,7 @@
 #include "fix_capillary_liquid.h"
 
 #include "capillary_bridges.h"
+#include "fix_capillary_wall.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -35,6 +36,7 @@
 #include "force.h"
 #include "group.h"
 #include "memory.h"
+#include "modify.h"
 #include "neighbor.h"
 #include "pair.h"
 #include "update.h"
@@ -317,6 +319,9 @@ void FixCapillaryLiquid::init()
   if (!bridges)
     error->all(FLERR, "fix capillary/liquid requires pair style gran/capillary (alone or as a "
                "sub-style of pair_style hybrid/overlay)");
+  walls.clear();
+  for (auto *wall : modify->get_fix_by_style("^capillary/wall$"))
+    walls.push_back(static_cast<FixCapillaryWall *>(wall));
   ensure_totals();
   census_valid = 0;
 }

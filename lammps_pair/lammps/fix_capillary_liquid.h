@@ -33,6 +33,7 @@ struct cb_bridge;
 namespace LAMMPS_NS {
 
 struct CapillaryBridges;
+class FixCapillaryWall;
 
 class FixCapillaryLiquid : public Fix {
  public:
@@ -82,6 +83,7 @@ class FixCapillaryLiquid : public Fix {
  protected:
   class Pair *pair;              // pair style gran/capillary (its neighbor list)
   CapillaryBridges *bridges;     // its bridges (the same object)
+  std::vector<FixCapillaryWall *> walls;    // the fixes capillary/wall: the walls' bridges
   double *free_liquid;           // Protocols 2, 3: free liquid per atom [m^3]; else nullptr
   int every;               // Protocol 1: every N steps; 0 = at every re-neighboring
   int start_free;          // Protocols 2, 3: start as free liquid (1) or as bridges (0)
@@ -129,7 +131,8 @@ class FixCapillaryLiquid : public Fix {
   void update_bridges();
   void advance_and_release(int i, int j, double rsq, double gap, cb_bridge *bridge);
   void release(int i, int j, double volume, double gap);
-  int removal_chosen(int i, int j);
+  int removal_chosen(long long id1, long long id2);
+  void update_wall_bridges(FixCapillaryWall &wall);
   void remove_and_release(int i, int j, double gap, cb_bridge *bridge);
   void report_removal();
   void receive_at(int i, int j, double delz, double r);

@@ -1,0 +1,466 @@
+/* ----------------------------------------------------------------------
+   capbridge — LAMMPS binding: fix capillary/wall (see fix_capillary_wall.h)
+
+   fix ID group capillary/wall xplane|yplane|zplane LO HI [angle DEG] [volume V]
+
+   Every physical rule is the core's: the sphere-plane bridge (r2 = CB_PLANE: the laws'
+   plane forms, the rupture distance), the wall's contact angle (cb_wall_contact_angle),
+   the bridge states (cb_bridge_step), Protocol 2's take with the wall's share 0
+   (cb_protocol2_take), the viscous damping (cb_viscous_damping).  This file gathers the
+   grain and the plane, and scatters the force.
+------------------------------------------------------------------------- */
+
+#include "fix_capillary_wall.h"
+
+#include "capillary_bridges.h"
+#include "capillary_liquid_mode.h"
+#include "fix_capillary_liquid.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "math_const.h"
+#include "memory.h"
+#include "modify.h"
+#include "pair.h"
+#include "update.h"
+#include "utils.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+using MathConst::MY_PI;
+
+/* ---------------------------------------------------------------------- */
+
+FixCapillaryWall::FixCapillaryWall(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), nwalls(0), wall_angle(-1.0), volume_given(-1.0), key_base(0),
+    state(nullptr), bridges(nullptr), liquid(nullptr), per_atom_liquid(0), liquid_groupbit(0),
+    census_step(-1)
+{
+  parse_walls(narg, arg);
+  for (int k = 6; k < narg; k += 2) {
+    if (k + 1 >= narg)
+      error->all(FLERR, "fix capillary/wall: keyword '{}' needs a value", arg[k]);
+    if (strcmp(arg[k], "angle") == 0) {
+      const double degrees = utils::numeric(FLERR, arg[k + 1], false, lmp);
+      if (!(degrees >= 0.0 && degrees < 90.0))
+        error->all(FLERR, "fix capillary/wall: angle {}: the wall's contact angle must be in "
+                   "0 <= angle < 90 degrees", arg[k + 1]);
+      wall_angle = degrees * MY_PI / 180.0;
+    } else if (strcmp(arg[k], "volume") == 0) {
+      volume_given = utils::numeric(FLERR, arg[k + 1], false, lmp);
+      if (!(volume_given > 0.0) || !std::isfinite(volume_given))
+        error->all(FLERR, "fix capillary/wall: volume {}: a bridge volume must be > 0 and "
+                   "finite", arg[k + 1]);
+    } else {
+      error->all(FLERR, "fix capillary/wall: unknown keyword '{}': allowed angle, volume",
+                 arg[k]);
+    }
+  }
+
+  vector_flag = 1;
+  size_vector = 5;
+  global_freq = 1;
+  extvector = 1;
+  restart_peratom = 1;
+  create_attribute = 1;
+  maxexchange = nwalls * CB_BRIDGE_DOUBLES;
+  for (double &v : values) v = 0.0;
+  for (double &f : wall_force) f = 0.0;
+  FixCapillaryWall::grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < atom->nlocal; i++) FixCapillaryWall::set_arrays(i);
+}
+
+/* ----------------------------------------------------------------------
+   the wall style and its two positions (arguments 3, 4, 5)
+------------------------------------------------------------------------- */
+
+void FixCapillaryWall::parse_walls(int narg, char **arg)
+{
+  if (narg < 6)
+    error->all(FLERR, "fix capillary/wall: expected 'xplane|yplane|zplane LO HI' (LO or HI may "
+               "be NULL)");
+  int normal = -1;
+  if (strcmp(arg[3], "xplane") == 0) normal = 0;
+  if (strcmp(arg[3], "yplane") == 0) normal = 1;
+  if (strcmp(arg[3], "zplane") == 0) normal = 2;
+  if (normal < 0)
+    error->all(FLERR, "fix capillary/wall: unknown wall style '{}': allowed xplane, yplane, "
+               "zplane", arg[3]);
+  for (int k = 0; k < 2; k++) {
+    if (strcmp(arg[4 + k], "NULL") == 0) continue;
+    axis[nwalls] = normal;
+    side[nwalls] = k == 0 ? 1.0 : -1.0;
+    position[nwalls] = utils::numeric(FLERR, arg[4 + k], false, lmp);
+    nwalls++;
+  }
+  if (nwalls == 0)
+    error->all(FLERR, "fix capillary/wall: both LO and HI are NULL: give at least one plane");
+  if (nwalls == 2 && !(position[0] < position[1]))
+    error->all(FLERR, "fix capillary/wall: LO {} must be below HI {}", position[0], position[1]);
+}
+
+FixCapillaryWall::~FixCapillaryWall()
+{
+  if (copymode) return;
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(state);
+  release_laws();
+}
+
+int FixCapillaryWall::setmask()
+{
+  return POST_FORCE;
+}
+
+/* ----------------------------------------------------------------------
+   the pair's bridges and type pairs, the liquid fix, each type's wall law
+------------------------------------------------------------------------- */
+
+void FixCapillaryWall::init()
+{
+  bridges = dynamic_cast<CapillaryBridges *>(force->pair_match("gran/capillary", 1));
+  if (!bridges)
+    error->all(FLERR, "fix capillary/wall requires pair style gran/capillary (alone or as a "
+               "sub-style of pair_style hybrid/overlay): its type pairs give the walls' law");
+  if (update->whichflag == 2)
+    error->all(FLERR, "fix capillary/wall does not support minimization");
+  if (utils::strmatch(update->integrate_style, "^respa"))
+    error->all(FLERR, "fix capillary/wall does not support run_style respa: use run_style "
+               "verlet");
+  auto found = modify->get_fix_by_style("^capillary/liquid$");
+  liquid = found.empty() ? nullptr : dynamic_cast<FixCapillaryLiquid *>(found.front());
+  per_atom_liquid = liquid && capillary_liquid_per_atom(liquid->mode);
+  liquid_groupbit = liquid ? liquid->groupbit : 0;
+  if (liquid && liquid->mode == LIQUID_PROTOCOL1)
+    error->all(FLERR, "fix capillary/wall: fix capillary/liquid protocol1 does not distribute "
+               "liquid to walls yet: allowed with walls are fixed, protocol2, protocol3");
+  if (per_atom_liquid && volume_given > 0.0)
+    error->all(FLERR, "fix capillary/wall: keyword volume is for liquid mode fixed; under fix "
+               "capillary/liquid {} the grains' free liquid forms the wall bridges",
+               liquid->mode_name());
+  // the walls' keys: after those of the capillary/wall fixes defined before this one
+  key_base = 0;
+  for (auto *other : modify->get_fix_by_style("^capillary/wall$")) {
+    if (other == this) break;
+    key_base += static_cast<FixCapillaryWall *>(other)->nwalls;
+  }
+  derive_laws();
+}
+
+/* ----------------------------------------------------------------------
+   per type: the law of the type's own type pair, at the wall's contact angle (the core's
+   rule for two surfaces, cb_wall_contact_angle) when keyword angle differs from the grains'
+------------------------------------------------------------------------- */
+
+void FixCapillaryWall::derive_laws()
+{
+  release_laws();
+  const int ntypes = atom->ntypes;
+  own_laws.assign(ntypes + 1, cb_law{});
+  laws.assign(ntypes + 1, nullptr);
+  volumes.assign(ntypes + 1, 0.0);
+  for (int t = 1; t <= ntypes; t++) {
+    if (!bridges->wet_type_pair(t, t)) continue;
+    const CapillaryBridges::TypePair &tp = bridges->type_pair(t, t);
+    volumes[t] = volume_given > 0.0 ? volume_given : tp.formation_volume;
+    laws[t] = tp.law;
+    if (wall_angle < 0.0 || wall_angle == tp.law->contact_angle) continue;
+    cb_law &own = own_laws[t];
+    own = *tp.law;
+    own.data = nullptr;    // a table law builds its own table (cb_law_prepare)
+    own.prepared = 0;
+    own.contact_angle = cb_wall_contact_angle(tp.law->contact_angle, wall_angle);
+    cb_message msg;
+    if (cb_law_prepare(&own, &msg) != CB_OK)
+      error->all(FLERR, "fix capillary/wall: the law of type {} at the wall's angle: {}", t,
+                 msg.text);
+    laws[t] = &own;
+  }
+}
+
+void FixCapillaryWall::release_laws()
+{
+  for (cb_law &own : own_laws)
+    if (own.prepared) cb_law_release(&own);
+  own_laws.clear();
+}
+
+int FixCapillaryWall::atom_type(int atom_index) const
+{
+  return atom->type[atom_index];
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCapillaryWall::setup(int vflag)
+{
+  check_states();
+  post_force(vflag);
+}
+
+/* ----------------------------------------------------------------------
+   each stored bridge (a restart file's, an earlier run's) checked and its constants derived
+   again for this run's law (new coefficients, a new angle)
+------------------------------------------------------------------------- */
+
+void FixCapillaryWall::check_states()
+{
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int w = 0; w < nwalls; w++) {
+      cb_bridge *bridge = bridge_at(i, w);
+      int status = cb_bridge_check_state(bridge);
+      if (status != CB_OK) fail(status, "stored bridge", i, NAN, bridge->volume);
+      if (bridge->active == 0.0) continue;
+      const cb_law *law = law_of(i);
+      if (!law)
+        error->one(FLERR, "fix capillary/wall: atom {} holds a wall bridge, but its type {} is "
+                   "dry in this run (pair_coeff volume 0)", atom->tag[i], atom_type(i));
+      status = cb_bridge_set_volume(law, atom->radius[i], CB_PLANE, bridge->volume, bridge);
+      if (status != CB_OK) fail(status, "bridge constants", i, NAN, bridge->volume);
+    }
+}
+
+/* ----------------------------------------------------------------------
+   the gap of a grain to one wall, and its contact point's height above the centre
+------------------------------------------------------------------------- */
+
+double FixCapillaryWall::wall_gap(int i, int w, double &offset) const
+{
+  const double radius = atom->radius[i];
+  offset = axis[w] == 2 ? -side[w] * radius : 0.0;
+  return side[w] * (atom->x[i][axis[w]] - position[w]) - radius;
+}
+
+void FixCapillaryWall::contacts(std::vector<Contact> &out) const
+{
+  out.clear();
+  const int *mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit) || !laws[atom_type(i)]) continue;
+    const int wet = !liquid_groupbit || (mask[i] & liquid_groupbit);
+    for (int w = 0; w < nwalls; w++) {
+      double offset;
+      const double gap = wall_gap(i, w, offset);
+      if (gap > 0.0 && cb_bridge_dry(bridge_at(i, w))) continue;
+      out.push_back({i, w, gap, offset, wet});
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the force evaluation: each grain's wall bridges, their capillary (and viscous) force
+------------------------------------------------------------------------- */
+
+void FixCapillaryWall::post_force(int /*vflag*/)
+{
+  double **f = atom->f, **torque = atom->torque;
+  const double *radius = atom->radius;
+  const int *mask = atom->mask;
+  for (double &w : wall_force) w = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit) || !laws[atom_type(i)]) continue;
+    for (int w = 0; w < nwalls; w++) {
+      double offset;
+      const double gap = wall_gap(i, w, offset);
+      cb_bridge *bridge = bridge_at(i, w);
+      if (gap > 0.0 && cb_bridge_dry(bridge)) continue;
+      double normal = -bridge_force(i, w, gap, bridge);    // along n, from the wall
+      double ft[3] = {0.0, 0.0, 0.0};
+      if (laws[atom_type(i)]->viscosity > 0.0 && bridge->active != 0.0 && gap > 0.0)
+        normal += viscous_normal(i, w, gap, bridge, ft);
+      const int a = axis[w];
+      f[i][a] += side[w] * normal;
+      wall_force[a] -= side[w] * normal;
+      for (int k = 0; k < 3; k++) {
+        f[i][k] += ft[k];
+        wall_force[k] -= ft[k];
+      }
+      // torque of ft at the contact point -r n: -r n x ft
+      const double n[3] = {a == 0 ? side[w] : 0.0, a == 1 ? side[w] : 0.0,
+                           a == 2 ? side[w] : 0.0};
+      const double r = radius[i];
+      torque[i][0] -= r * (n[1] * ft[2] - n[2] * ft[1]);
+      torque[i][1] -= r * (n[2] * ft[0] - n[0] * ft[2]);
+      torque[i][2] -= r * (n[0] * ft[1] - n[1] * ft[0]);
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   one wall bridge at this gap: advanced here (liquid mode fixed), or, under Protocols 2
+   and 3 (advanced by fix capillary/liquid), formed from the grain's offer and given its
+   Protocol 3 deposit; returns the capillary attraction (>= 0)
+------------------------------------------------------------------------- */
+
+double FixCapillaryWall::bridge_force(int i, int w, double gap, cb_bridge *bridge)
+{
+  const cb_law *law = law_of(i);
+  const double r = atom->radius[i];
+  const int wet = !liquid_groupbit || (atom->mask[i] & liquid_groupbit);
+  double available = 0.0, released = 0.0, capillary = 0.0;
+  cb_transition transition = CB_BRIDGE_STAYS_DRY;
+  int status = CB_OK;
+  if (!per_atom_liquid) {
+    available = wet ? volumes[atom_type(i)] : 0.0;
+    status = cb_bridge_step(law, r, CB_PLANE, gap, available, bridge, &transition, &released,
+                            &capillary);
+    if (status != CB_OK) fail(status, "bridge step", i, gap, available);
+  } else if (bridge->active == 0.0) {
+    if (!wet || !cb_bridge_may_form(bridge, gap)) return 0.0;
+    double offer = liquid->offer[i], wall_share = 0.0;
+    status = cb_protocol2_take(&offer, &wall_share, &available);
+    if (status != CB_OK) fail(status, "liquid take", i, gap, available);
+    if (!(available > 0.0)) return 0.0;
+    status = cb_bridge_step(law, r, CB_PLANE, gap, available, bridge, &transition, &released,
+                            &capillary);
+    if (status != CB_OK) fail(status, "bridge formation", i, gap, available);
+  } else {
+    const double deposit = liquid->deposit[i];
+    if (liquid->mode == LIQUID_PROTOCOL3 && deposit > 0.0 &&
+        liquid->best_partner[i] == (tagint) wall_key(w)) {
+      status = cb_bridge_set_volume(law, r, CB_PLANE, bridge->volume + deposit, bridge);
+      if (status != CB_OK) fail(status, "Protocol 3 deposit", i, gap, bridge->volume + deposit);
+    }
+    status = cb_bridge_force(law, r, CB_PLANE, gap, bridge, &capillary);
+    if (status != CB_OK) fail(status, "capillary force", i, gap, bridge->volume);
+  }
+  if (transition == CB_BRIDGE_FORMED) bridges->n_formed += 1.0;
+  if (transition == CB_BRIDGE_RUPTURED) bridges->n_ruptured += 1.0;
+  return capillary;
+}
+
+/* ----------------------------------------------------------------------
+   a stretched bridge's viscous force (the core's cb_viscous_damping, sphere-plane): the
+   normal part returned (along n, from the wall), the tangential one in ft, at the contact
+   point's velocity v_t - r omega x n (the wall at rest)
+------------------------------------------------------------------------- */
+
+double FixCapillaryWall::viscous_normal(int i, int w, double gap, const cb_bridge *bridge,
+                                        double *ft)
+{
+  const double *v = atom->v[i], *omega = atom->omega[i];
+  const double r = atom->radius[i];
+  const int a = axis[w];
+  const double n[3] = {a == 0 ? side[w] : 0.0, a == 1 ? side[w] : 0.0, a == 2 ? side[w] : 0.0};
+  double normal = 0.0, tangential = 0.0;
+  const int status = cb_viscous_damping(law_of(i), r, CB_PLANE, gap, bridge->volume, &normal,
+                                        &tangential);
+  if (status != CB_OK) fail(status, "viscous damping", i, gap, bridge->volume);
+  const double gap_rate = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
+  const double spin[3] = {omega[1] * n[2] - omega[2] * n[1], omega[2] * n[0] - omega[0] * n[2],
+                          omega[0] * n[1] - omega[1] * n[0]};
+  for (int k = 0; k < 3; k++) ft[k] = -tangential * (v[k] - gap_rate * n[k] - r * spin[k]);
+  return -normal * gap_rate;
+}
+
+[[noreturn]] void FixCapillaryWall::fail(int status, const char *what, int i, double gap,
+                                         double volume) const
+{
+  error->one(FLERR, "fix capillary/wall: {} of atom {} (type {}, radius {}) and a wall: gap {}, "
+             "volume {}: {}", what, atom->tag[i], atom_type(i), atom->radius[i], gap, volume,
+             cb_status_message((cb_status) status));
+}
+
+/* ----------------------------------------------------------------------
+   output: 1 wall bridges, 2 their liquid, 3-5 the force their bridges exert on the walls
+------------------------------------------------------------------------- */
+
+void FixCapillaryWall::census(double &count, double &liquid_held) const
+{
+  count = liquid_held = 0.0;
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int w = 0; w < nwalls; w++) {
+      const cb_bridge *bridge = bridge_at(i, w);
+      if (bridge->active == 0.0) continue;
+      count += 1.0;
+      liquid_held += bridge->volume;
+    }
+}
+
+double FixCapillaryWall::compute_vector(int n)
+{
+  if (census_step != update->ntimestep) {
+    double local[5];
+    census(local[0], local[1]);
+    for (int k = 0; k < 3; k++) local[2 + k] = wall_force[k];
+    MPI_Allreduce(local, values, 5, MPI_DOUBLE, MPI_SUM, world);
+    census_step = update->ntimestep;
+  }
+  return values[n];
+}
+
+/* ----------------------------------------------------------------------
+   per-atom bridges: grown, copied, migrated, written to and read from restart files
+------------------------------------------------------------------------- */
+
+void FixCapillaryWall::grow_arrays(int nmax)
+{
+  memory->grow(state, nmax, nwalls * CB_BRIDGE_DOUBLES, "capillary/wall:state");
+}
+
+void FixCapillaryWall::copy_arrays(int i, int j, int /*delflag*/)
+{
+  for (int k = 0; k < nwalls * CB_BRIDGE_DOUBLES; k++) state[j][k] = state[i][k];
+}
+
+void FixCapillaryWall::set_arrays(int i)
+{
+  for (int k = 0; k < nwalls * CB_BRIDGE_DOUBLES; k++) state[i][k] = 0.0;
+}
+
+int FixCapillaryWall::pack_exchange(int i, double *buf)
+{
+  for (int k = 0; k < nwalls * CB_BRIDGE_DOUBLES; k++) buf[k] = state[i][k];
+  return nwalls * CB_BRIDGE_DOUBLES;
+}
+
+int FixCapillaryWall::unpack_exchange(int nlocal, double *buf)
+{
+  for (int k = 0; k < nwalls * CB_BRIDGE_DOUBLES; k++) state[nlocal][k] = buf[k];
+  return nwalls * CB_BRIDGE_DOUBLES;
+}
+
+int FixCapillaryWall::pack_restart(int i, double *buf)
+{
+  // buf[0] is the count, by the convention of atom->extra
+  const int n = nwalls * CB_BRIDGE_DOUBLES;
+  buf[0] = n + 1;
+  for (int k = 0; k < n; k++) buf[k + 1] = state[i][k];
+  return n + 1;
+}
+
+void FixCapillaryWall::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  const int n = static_cast<int>(extra[nlocal][m]) - 1;
+  if (n != nwalls * CB_BRIDGE_DOUBLES)
+    error->one(FLERR, "fix capillary/wall: the restart file holds {} values per atom for this "
+               "fix, the input's {} wall(s) need {}", n, nwalls, nwalls * CB_BRIDGE_DOUBLES);
+  m++;
+  for (int k = 0; k < n; k++) state[nlocal][k] = extra[nlocal][m + k];
+}
+
+int FixCapillaryWall::size_restart(int /*nlocal*/)
+{
+  return nwalls * CB_BRIDGE_DOUBLES + 1;
+}
+
+int FixCapillaryWall::maxsize_restart()
+{
+  return nwalls * CB_BRIDGE_DOUBLES + 1;
+}
+
+double FixCapillaryWall::memory_usage()
+{
+  return (double) atom->nmax * nwalls * CB_BRIDGE_DOUBLES * sizeof(double);
+}

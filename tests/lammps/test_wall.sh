@@ -1,0 +1,107 @@
+#!/bin/sh
+# Bridges between grains and flat walls (fix capillary/wall; the core's sphere-plane pair,
+# r2 = CB_PLANE).  in.wall: one sphere driven away from a zplane wall (above a floor, side
+# 1, and below a ceiling, side -1) from an overlap where the bridge forms to past its
+# rupture.  At every step the force on the sphere equals the core's (`capbridge force
+# --plane` at that gap): along the normal n (from the wall to the sphere) -F_cap -
+# c_n v.n, across it -c_t v_t, the torque -r n x f_t, to 1e-9 relative; the fix's vector
+# gives the bridge, its volume and the opposite force on the wall; the bridge breaks at
+# the core's rupture distance.  The table law's force follows the exact Laplace-Young
+# sphere-plane bridge (`capbridge exact --plane`) to 2e-3.  Keyword angle: the law at the
+# mean-cosine angle of grain and wall (cb_wall_contact_angle).
+. "$(dirname "$0")/lib.sh" "$@"
+
+R=5e-4 V=2e-11 VX=0.02 VZ=1 DT=2e-6 N=200
+
+run() {  # run LOG NP SIDE LAW "KEYS" ["ANGLE_KEYS"]
+    lmp "$2" "$1" -in "$DECKS/in.wall" -var r $R -var volume $V -var law "$4" -var keys "$5" \
+        -var angle_keys "${6:-}" -var side "$3" -var vx $VX -var vz $VZ -var dt $DT \
+        -var nsteps $N >/dev/null 2>&1 ||
+        { fail "$(basename "$1"): LAMMPS failed: $(grep -h -m1 ERROR "$1" "$1.screen")"; return 1; }
+}
+
+# expected LOG SIDE LAW "KEYS": per thermo row, the row and the core's "gap,force,..." row
+expected() {
+    thermo "$1" | while read -r step z fx fz ty wy bridges volume wfx wfz; do
+        gap=$(awk -v z="$z" -v s="$2" -v r=$R 'BEGIN { printf "%.17g", s * z - r }')
+        # shellcheck disable=SC2086
+        row=$("$CB" force "$3" $4 --r1 $R --plane --volume $V --gap "$gap" | tail -1)
+        echo "$step $z $fx $fz $ty $wy $bridges $volume $wfx $wfz $row"
+    done
+}
+
+# compare LABEL SIDE: the rows of expected against the force, torque and wall force
+compare() {
+    awk -v label="$1" -v s="$2" -v vx=$VX -v vz=$VZ -v r=$R -v vol=$V '
+    function abs(x) { return x < 0 ? -x : x }
+    function same(name, got, want, scale) {
+        if (abs(got - want) <= 1e-9 * scale) return
+        if (bad < 5) printf "%s step %d: %s LAMMPS %.17g, core %.17g\n", label, $1, name, got, want
+        bad++
+    }
+    {
+        split($11, c, ",")   # gap, force, stiffness, rupture[, c_n, c_t]
+        rate = $1 > 0 ? vz : 0                    # fix move sets the velocity from step 1 on
+        tangential = $1 > 0 ? vx : 0
+        if ($7 == 1) {
+            if (c[1] > c[4]) { printf "%s step %d: a bridge at gap %.6g beyond the rupture distance %.6g\n", label, $1, c[1], c[4]; bad++ }
+            viscous = c[1] > 0 ? c[5] * rate : 0  # a stretched bridge only
+            ftx = c[1] > 0 ? -c[6] * tangential : 0
+            fn = -c[2] - viscous                  # along n, away from the wall
+            scale = c[2] + abs(viscous) + abs(ftx)
+            same("fz", $4, s * fn, scale); same("fx", $3, ftx, scale)
+            same("torque y", $5, -r * s * ftx, r * scale)
+            same("wall fz", $10, -s * fn, scale); same("wall fx", $9, -ftx, scale)
+            same("bridge volume", $8, vol, vol)
+            held++; last = c[1]
+        } else {
+            if (held == 0) { printf "%s step %d: no bridge at the start\n", label, $1; bad++ }
+            if (!broken && c[1] < c[4]) { printf "%s step %d: broken at gap %.6g before the rupture distance %.6g\n", label, $1, c[1], c[4]; bad++ }
+            if ($3 != 0 || $4 != 0) { printf "%s step %d: a force without a bridge\n", label, $1; bad++ }
+            broken++; rupture = c[4]
+        }
+        if ($6 != 0) { printf "%s step %d: omega %g, expected 0 (fix move)\n", label, $1, $6; bad++ }
+    }
+    END {
+        if (held < 50 || broken < 10) { printf "%s: %d steps with a bridge, %d after it broke\n", label, held, broken; bad++ }
+        printf "%s: %d steps with a bridge, force and torque as the core'"'"'s to 1e-9, broken between gaps %.6g and %.6g m (rupture distance %.6g)\n", label, held, last, last + vz * 2e-6, rupture
+        exit bad > 0 }' >"$TMP/why" || { fail "$(head -5 "$TMP/why")"; return; }
+    cat "$TMP/why"
+}
+
+for side in 1 -1; do
+    keys="gamma 0.0728 viscosity 0.5 min_gap 2e-7"
+    log="$TMP/wall-side$side.log"
+    run "$log" 1 $side richefeu "$keys" || continue
+    checks=$((checks + 1))
+    expected "$log" $side richefeu "$keys" >"$TMP/rows"
+    compare "richefeu viscous, side $side" $side <"$TMP/rows"
+done
+
+# keyword angle: grain 20 degrees, wall 50: the law at acos((cos 20 + cos 50) / 2)
+mean=$(awk 'BEGIN { d = atan2(0, -1) / 180; c = (cos(20 * d) + cos(50 * d)) / 2
+                    printf "%.17g", atan2(sqrt(1 - c * c), c) / d }')
+log="$TMP/wall-angle.log"
+if run "$log" 1 1 willett "gamma 0.0728 theta 20" "angle 50"; then
+    checks=$((checks + 1))
+    expected "$log" 1 willett "gamma 0.0728 theta $mean" >"$TMP/rows"
+    compare "willett, grain 20 and wall 50 degrees (theta $mean)" 1 <"$TMP/rows"
+fi
+
+# the table law against the exact sphere-plane bridge, every 10th step in contact
+log="$TMP/wall-table.log"
+if run "$log" 1 1 table "gamma 0.0728"; then
+    checks=$((checks + 1))
+    thermo "$log" | awk 'NR % 10 == 1 && $7 == 1' | while read -r step z fx fz rest; do
+        gap=$(awk -v z="$z" -v r=$R 'BEGIN { g = z - r; printf "%.17g", g < 0 ? 0 : g }')
+        exact=$("$CB" exact --r1 $R --plane --volume $V --gap "$gap" | tail -1 | cut -d, -f2)
+        echo "$step $gap $fz $exact"
+    done | awk '
+    function abs(x) { return x < 0 ? -x : x }
+    { n++; e = abs(-$3 - $4) / $4; if (e > worst) { worst = e; at = $2 } }
+    END {
+        printf "table law at a wall: %d gaps, largest error against the exact bridge %.3g (gap %.3g m)\n", n, worst, at
+        exit !(n >= 8 && worst < 2e-3) }' >"$TMP/why" || fail "$(cat "$TMP/why")"
+    cat "$TMP/why"
+fi
+finish
