@@ -4,14 +4,16 @@
 . "$(dirname "$0")/lib.sh" "$@"
 
 GOOD="100 40 0.3 0.4 law richefeu gamma 0.0728 volume 1e-12"
-# expect NAME PATTERN PAIR_STYLE PAIR_COEFF [FIXMODE [FIXARGS]]: LAMMPS fails, its ERROR line
-# matches PATTERN (an extended regular expression)
+# expect NAME PATTERN PAIR_STYLE PAIR_COEFF [FIXMODE [FIXARGS [FIXMODIFY [WALLARGS]]]]: LAMMPS
+# fails, its ERROR line matches PATTERN (an extended regular expression); WALLARGS: the
+# arguments of a fix capillary/wall
 expect() {
     name=$1 pattern=$2
     checks=$((checks + 1))
     lmp 1 "$TMP/$name.log" -in "$DECKS/in.errors" -var pstyle "$3" -var pcoeff "$4" \
         -var fixmode "${5:-none}" -var fixargs "${6:- }" \
-        -var fixmodify_on "$([ -n "${7:-}" ] && echo 1 || echo 0)" -var fixmodify "${7:- }" >/dev/null 2>&1
+        -var fixmodify_on "$([ -n "${7:-}" ] && echo 1 || echo 0)" -var fixmodify "${7:- }" \
+        -var wall_on "$([ -n "${8:-}" ] && echo 1 || echo 0)" -var wallargs "${8:- }" >/dev/null 2>&1
     code=$?
     line=$(grep -h -m1 'ERROR' "$TMP/$name.log" "$TMP/$name.log.screen" 2>/dev/null | head -1)
     if [ "$code" -eq 0 ]; then
@@ -23,6 +25,27 @@ expect() {
     fi
 }
 
+# fix capillary/wall
+expect wall_style "fix capillary/wall: unknown wall style 'zcylinder': allowed xplane, yplane, zplane" \
+    gran/capillary "$GOOD" none " " "" "zcylinder 0.001 NULL NULL"
+expect wall_both_null "fix capillary/wall: both LO and HI are NULL" \
+    gran/capillary "$GOOD" none " " "" "zplane NULL NULL"
+expect wall_order "fix capillary/wall: LO 0.005 must be below HI -0.005" \
+    gran/capillary "$GOOD" none " " "" "xplane 0.005 -0.005"
+expect wall_angle "fix capillary/wall: angle 95: the wall's contact angle must be in 0 <= angle < 90" \
+    gran/capillary "$GOOD" none " " "" "zplane -0.001 NULL angle 95"
+expect wall_volume "fix capillary/wall: volume -1: a bridge volume must be > 0" \
+    gran/capillary "$GOOD" none " " "" "zplane -0.001 NULL volume -1"
+expect wall_keyword "fix capillary/wall: unknown keyword 'height': allowed angle, volume" \
+    gran/capillary "$GOOD" none " " "" "zplane -0.001 NULL height 2"
+expect wall_value "fix capillary/wall: keyword 'angle' needs a value" \
+    gran/capillary "$GOOD" none " " "" "zplane -0.001 NULL angle"
+expect wall_protocol1 "fix capillary/wall: fix capillary/liquid protocol1 does not distribute liquid to walls yet" \
+    gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728" protocol1 "liquid 1e-11" "" "zplane -0.001 NULL"
+expect wall_volume_protocol "fix capillary/wall: keyword volume is for liquid mode fixed" \
+    gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728" protocol2 "liquid 1e-11" "" "zplane -0.001 NULL volume 1e-12"
+expect wall_pair "fix capillary/wall requires pair style gran/capillary" \
+    "gran/hooke/history 100 40 0.3 0.4 0.5 1" "" none " " "" "zplane -0.001 NULL"
 expect unknown_keyword "unknown keyword 'foo': allowed gamma, theta, rupture, overlap, validity, viscosity, min_gap, c" \
     gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728 foo 1"
 expect viscosity_without_min_gap "viscosity 0.001 needs min_gap" \

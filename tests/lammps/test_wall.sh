@@ -9,30 +9,35 @@
 # the core's rupture distance.  The table law's force follows the exact Laplace-Young
 # sphere-plane bridge (`capbridge exact --plane`) to 2e-3.  Keyword angle: the law at the
 # mean-cosine angle of grain and wall (cb_wall_contact_angle).
+# Under Protocols 2 and 3 the sphere's free liquid forms the bridge and returns to it at
+# rupture; 192 grains settling on a wet floor (in.wall_liquid, fix wall/gran's contact)
+# conserve the liquid at every output on 1, 2 and 3 ranks and across a restart file (the
+# wall bridges and their liquid come back).
 . "$(dirname "$0")/lib.sh" "$@"
 
 R=5e-4 V=2e-11 VX=0.02 VZ=1 DT=2e-6 N=200
 
-run() {  # run LOG NP SIDE LAW "KEYS" ["ANGLE_KEYS"]
+run() {  # run LOG NP SIDE LAW "KEYS" ["ANGLE_KEYS" [PROTOCOL]]
     lmp "$2" "$1" -in "$DECKS/in.wall" -var r $R -var volume $V -var law "$4" -var keys "$5" \
-        -var angle_keys "${6:-}" -var side "$3" -var vx $VX -var vz $VZ -var dt $DT \
-        -var nsteps $N >/dev/null 2>&1 ||
+        -var angle_keys "${6:-}" -var protocol "${7:-none}" -var side "$3" -var vx $VX \
+        -var vz $VZ -var dt $DT -var nsteps $N >/dev/null 2>&1 ||
         { fail "$(basename "$1"): LAMMPS failed: $(grep -h -m1 ERROR "$1" "$1.screen")"; return 1; }
 }
 
 # expected LOG SIDE LAW "KEYS": per thermo row, the row and the core's "gap,force,..." row
 expected() {
-    thermo "$1" | while read -r step z fx fz ty wy bridges volume wfx wfz; do
+    thermo "$1" | while read -r step z fx fz ty wy bridges volume wfx wfz free; do
         gap=$(awk -v z="$z" -v s="$2" -v r=$R 'BEGIN { printf "%.17g", s * z - r }')
         # shellcheck disable=SC2086
         row=$("$CB" force "$3" $4 --r1 $R --plane --volume $V --gap "$gap" | tail -1)
-        echo "$step $z $fx $fz $ty $wy $bridges $volume $wfx $wfz $row"
+        echo "$step $z $fx $fz $ty $wy $bridges $volume $wfx $wfz $free $row"
     done
 }
 
-# compare LABEL SIDE: the rows of expected against the force, torque and wall force
+# compare LABEL SIDE [PROTOCOL]: the rows of expected against the force, torque and wall
+# force; under a protocol the sphere's free liquid is 0 while the bridge holds V, V after
 compare() {
-    awk -v label="$1" -v s="$2" -v vx=$VX -v vz=$VZ -v r=$R -v vol=$V '
+    awk -v label="$1" -v s="$2" -v protocol="${3:-none}" -v vx=$VX -v vz=$VZ -v r=$R -v vol=$V '
     function abs(x) { return x < 0 ? -x : x }
     function same(name, got, want, scale) {
         if (abs(got - want) <= 1e-9 * scale) return
@@ -40,7 +45,8 @@ compare() {
         bad++
     }
     {
-        split($11, c, ",")   # gap, force, stiffness, rupture[, c_n, c_t]
+        split($12, c, ",")   # gap, force, stiffness, rupture[, c_n, c_t]
+        if (protocol != "none") same("free liquid", $11, $7 == 1 ? 0 : vol, vol)
         rate = $1 > 0 ? vz : 0                    # fix move sets the velocity from step 1 on
         tangential = $1 > 0 ? vx : 0
         if ($7 == 1) {
@@ -78,6 +84,16 @@ for side in 1 -1; do
     compare "richefeu viscous, side $side" $side <"$TMP/rows"
 done
 
+# Protocols 2 and 3: the sphere's free liquid V forms the bridge at contact, and all of it
+# returns to the sphere at rupture (the wall holds none)
+for protocol in protocol2 protocol3; do
+    log="$TMP/wall-$protocol.log"
+    run "$log" 1 1 richefeu "gamma 0.0728" "" $protocol || continue
+    checks=$((checks + 1))
+    expected "$log" 1 richefeu "gamma 0.0728" >"$TMP/rows"
+    compare "richefeu, $protocol" 1 $protocol <"$TMP/rows"
+done
+
 # keyword angle: grain 20 degrees, wall 50: the law at acos((cos 20 + cos 50) / 2)
 mean=$(awk 'BEGIN { d = atan2(0, -1) / 180; c = (cos(20 * d) + cos(50 * d)) / 2
                     printf "%.17g", atan2(sqrt(1 - c * c), c) / d }')
@@ -104,4 +120,42 @@ if run "$log" 1 1 table "gamma 0.0728"; then
         exit !(n >= 8 && worst < 2e-3) }' >"$TMP/why" || fail "$(cat "$TMP/why")"
     cat "$TMP/why"
 fi
+# grains on a wet floor: the liquid conserved, the floor wetted, the bridges restarted
+scene_data "$TMP/floor.data" 8 8 3 7 0.1
+sed 's/^0 .* zlo zhi$/0 1e-2 zlo zhi/' "$TMP/floor.data" >"$TMP/floor-high.data"
+floor() {  # floor LOG NP MODE RESTART
+    lmp "$2" "$1" -in "$DECKS/in.wall_liquid" -var data "$TMP/floor-high.data" -var mode "$3" \
+        -var nsteps 3000 -var restart "$4" -var out "$1" >/dev/null 2>&1 ||
+        { fail "$(basename "$1"): LAMMPS failed: $(grep -h -m1 ERROR "$1" "$1.screen")"; return 1; }
+}
+for mode in protocol2 protocol3; do
+    for np in 1 2 3; do
+        log="$TMP/floor-$mode-np$np.log"
+        floor "$log" $np $mode no || continue
+        checks=$((checks + 1))
+        thermo "$log" | awk -v label="floor $mode np $np" '
+        function abs(x) { return x < 0 ? -x : x }
+        { rows++; if (abs($5) > worst) worst = abs($5); walls = $6; held = $7 }
+        END {
+            printf "%s: %d outputs, total liquid within %.2g of its start, %d floor bridges holding %.3g m^3 at the end\n", label, rows, worst, walls, held
+            exit !(rows == 31 && worst < 1e-12 && walls >= 5 && held > 0) }' >"$TMP/why" ||
+            { fail "$(cat "$TMP/why")"; continue; }
+        cat "$TMP/why"
+    done
+    # a restart file written at step 1500 on 2 ranks, read in a new LAMMPS: the floor
+    # bridges and the total come back as they were, and the liquid stays conserved
+    log="$TMP/floor-$mode-restart.log"
+    floor "$log" 2 $mode yes || continue
+    checks=$((checks + 1))
+    thermo "$log" | awk -v label="floor $mode restart" '
+    function abs(x) { return x < 0 ? -x : x }
+    { rows++; if (abs($5) > worst) worst = abs($5) }
+    $1 == 1500 && !seen { seen = 1; walls = $6; held = $7; total = $4; next }
+    $1 == 1500 { back = ($6 == walls && abs($7 - held) <= 1e-12 * held && abs($4 - total) <= 1e-12 * total) }
+    END {
+        printf "%s: %d floor bridges holding %.6g m^3 at step 1500, after the restart %s; total liquid within %.2g of its start\n", label, walls, held, back ? "the same" : "NOT the same", worst
+        exit !(rows == 33 && back && walls >= 5 && worst < 1e-12) }' >"$TMP/why" ||
+        { fail "$(cat "$TMP/why")"; continue; }
+    cat "$TMP/why"
+done
 finish
