@@ -29,6 +29,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -39,7 +40,7 @@ using MathConst::MY_PI;
 FixCapillaryWall::FixCapillaryWall(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), nwalls(0), wall_angle(-1.0), volume_given(-1.0), key_base(0),
     state(nullptr), bridges(nullptr), liquid(nullptr), per_atom_liquid(0), liquid_groupbit(0),
-    census_step(-1)
+    census_step(-1), timestep_warned(0)
 {
   parse_walls(narg, arg);
   for (int k = 6; k < narg; k += 2) {
@@ -203,7 +204,70 @@ int FixCapillaryWall::atom_type(int atom_index) const
 void FixCapillaryWall::setup(int vflag)
 {
   check_states();
+  check_timestep();
   post_force(vflag);
+}
+
+/* ----------------------------------------------------------------------
+   the time step against the wall bridges' own limits (collective; at each run's setup,
+   warns once): the core's cb_timestep_limit (the capillary stiffness bound; the contact's
+   stiffness is fix wall/gran's) and cb_viscous_timestep_limit, for the sphere-plane pair
+   (a wall bridge's damping is about four times a pair's of equal spheres: R* = r), over
+   each wet type's radius range and smallest mass in the group, at the volume a bridge
+   forms with (fixed) or the liquid fix's design volume (Protocols 2, 3)
+------------------------------------------------------------------------- */
+
+void FixCapillaryWall::check_timestep()
+{
+  if (timestep_warned) return;
+  const int ntypes = atom->ntypes;
+  // per type: minus the smallest mass, minus the smallest radius, the largest radius (one MAX)
+  std::vector<double> local(3 * (ntypes + 1), -HUGE_VAL), global(local.size());
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    double *row = &local[3 * atom_type(i)];
+    row[0] = MAX(row[0], -atom->rmass[i]);
+    row[1] = MAX(row[1], -atom->radius[i]);
+    row[2] = MAX(row[2], atom->radius[i]);
+  }
+  MPI_Allreduce(local.data(), global.data(), (int) local.size(), MPI_DOUBLE, MPI_MAX, world);
+  for (int t = 1; t <= ntypes; t++) {
+    const double *row = &global[3 * t];
+    if (!laws[t] || row[2] == -HUGE_VAL) continue;
+    const double mass = -row[0];
+    const double volume = per_atom_liquid ? liquid->reach_volume() : volumes[t];
+    const cb_radius_range grain = {-row[1], row[2]}, plane = {CB_PLANE, CB_PLANE};
+    double limit = HUGE_VAL, stiffness = 0.0, viscous = HUGE_VAL, damping = 0.0;
+    int status = cb_timestep_limit(laws[t], grain, plane, &volume, 1, mass, 0.0, &limit,
+                                   &stiffness);
+    if (status == CB_OK && laws[t]->viscosity > 0.0)
+      status = cb_viscous_timestep_limit(laws[t], grain, plane, &volume, 1, mass, &viscous,
+                                         &damping);
+    if (status != CB_OK)
+      error->all(FLERR, "fix capillary/wall: type {}: no time-step limit for wall bridges of "
+                 "volume {} and radii {} to {} (smallest mass {}): {}", t, volume, grain.min,
+                 grain.max, mass, cb_status_message((cb_status) status));
+    // a deck that sets dt to exactly a limit is within it: allow for its rounding
+    const double dt = update->dt * (1.0 - 1e-12);
+    if (dt > limit || dt > viscous) {
+      timestep_warned = 1;
+      if (comm->me == 0) {
+        if (dt > limit)
+          error->warning(FLERR, "fix capillary/wall: time step {:.6g} s exceeds the limit "
+                         "{:.6g} s = 10% of pi sqrt(m/k) of the wall bridges of type {} "
+                         "(smallest mass m = {:.6g}, k = {:.6g} the capillary stiffness "
+                         "bound); this warning is given once", update->dt, limit, t, mass,
+                         stiffness);
+        else
+          error->warning(FLERR, "fix capillary/wall: time step {:.6g} s exceeds the limit "
+                         "{:.6g} s = 10% of pi m/c of the wall bridges' viscous force for "
+                         "type {} (smallest mass m = {:.6g}, c = {:.6g} the largest damping "
+                         "coefficient, at min_gap); this warning is given once", update->dt,
+                         viscous, t, mass, damping);
+      }
+      return;
+    }
+  }
 }
 
 /* ----------------------------------------------------------------------

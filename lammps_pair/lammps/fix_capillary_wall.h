@@ -99,12 +99,14 @@ class FixCapillaryWall : public Fix {
   double values[5];            // bridges, liquid, force on the walls (x, y, z)
   double wall_force[3];        // this rank's, at the last force evaluation
   bigint census_step;
+  int timestep_warned;
 
   int atom_type(int atom) const;
   void parse_walls(int narg, char **arg);
   void derive_laws();
   void release_laws();
   void check_states();
+  void check_timestep();
   double wall_gap(int atom, int wall, double &offset) const;
   double bridge_force(int atom, int wall, double gap, cb_bridge *bridge);
   double viscous_normal(int atom, int wall, double gap, const cb_bridge *bridge, double *ft);

@@ -84,6 +84,12 @@ for side in 1 -1; do
     compare "richefeu viscous, side $side" $side <"$TMP/rows"
 done
 
+# the time step, 2e-6 s, is above the wall bridge's viscous limit (c = 4 times a pair's of
+# equal spheres): warned by the fix in the viscous run only
+checks=$((checks + 1))
+grep -q "fix capillary/wall: time step 2e-06 s exceeds the limit .* of the wall bridges' viscous force for type 1" "$TMP/wall-side1.log" ||
+    fail "no warning of the wall bridges' viscous time-step limit: $(grep -h WARNING "$TMP/wall-side1.log")"
+
 # Protocols 2 and 3: the sphere's free liquid V forms the bridge at contact, and all of it
 # returns to the sphere at rupture (the wall holds none)
 for protocol in protocol2 protocol3; do
@@ -92,6 +98,9 @@ for protocol in protocol2 protocol3; do
     checks=$((checks + 1))
     expected "$log" 1 richefeu "gamma 0.0728" >"$TMP/rows"
     compare "richefeu, $protocol" 1 $protocol <"$TMP/rows"
+    checks=$((checks + 1))
+    ! grep -q "WARNING: fix capillary/wall: time step" "$log" ||
+        fail "$protocol: a wall time-step warning without viscosity: $(grep -h -m1 WARNING "$log")"
 done
 
 # keyword angle: grain 20 degrees, wall 50: the law at acos((cos 20 + cos 50) / 2)
