@@ -47,6 +47,12 @@ struct FixCapillaryLiquid::Protocol1Pairs {
   std::vector<double> geometry;              // r1, r2, gap per candidate
   std::vector<tagint> keys;                  // smaller tag, larger tag
   std::vector<std::pair<int, int>> where;    // i and its neighbor index jj
+  // then the grain-wall candidates (geometry r1, CB_PLANE, gap; keys wall key, tag)
+  struct WallEntry {
+    FixCapillaryWall *fix;
+    int atom, wall;
+  };
+  std::vector<WallEntry> walls;
   const cb_law *law = nullptr;
 };
 
@@ -503,7 +509,7 @@ int FixCapillaryLiquid::protocol1(double total, double &a, double &largest_volum
 {
   Protocol1Pairs mine;
   gather_candidates(mine);
-  std::vector<double> volumes(mine.where.size());
+  std::vector<double> volumes(mine.where.size() + mine.walls.size());
   double result[2] = {0.0, 0.0};    // alpha, the largest volume
   if (distribute_over_ranks(mine, total, volumes, result)) return 1;
   a = result[0];
@@ -552,6 +558,7 @@ void FixCapillaryLiquid::gather_candidates(Protocol1Pairs &mine)
       mine.where.emplace_back(i, jj);
     }
   }
+  for (FixCapillaryWall *wall : walls) gather_wall_candidates(*wall, mine);
   if (!mine.law) {
     for (int i = 1; i <= atom->ntypes && !mine.law; i++)
       for (int j = i; j <= atom->ntypes && !mine.law; j++)
@@ -560,6 +567,29 @@ void FixCapillaryLiquid::gather_candidates(Protocol1Pairs &mine)
   if (!mine.law)
     error->all(FLERR, "fix capillary/liquid {}: every type pair is dry (pair_coeff volume 0): no "
                "pair can hold the liquid", mode_name());
+}
+
+/* ----------------------------------------------------------------------
+   Protocol 1, step 1 for the walls of one fix capillary/wall: each wet grain (owned) within
+   the rupture distance of the design volume from a wall (a bridge of at most that volume
+   can hold no farther: check_alpha keeps alpha r^3 within it), its removed bridges left out
+------------------------------------------------------------------------- */
+
+void FixCapillaryLiquid::gather_wall_candidates(FixCapillaryWall &wall, Protocol1Pairs &mine)
+{
+  std::vector<FixCapillaryWall::Contact> near;
+  const double design = reach_volume();
+  wall.candidates(near, design);
+  for (const FixCapillaryWall::Contact &c : near) {
+    if (!c.wet || cb_bridge_removed_in_contact(wall.bridge_at(c.atom, c.wall), c.gap)) continue;
+    mine.law = mine.law ? mine.law : wall.law_of(c.atom);
+    mine.geometry.push_back(atom->radius[c.atom]);
+    mine.geometry.push_back(CB_PLANE);
+    mine.geometry.push_back(c.gap);
+    mine.keys.push_back((tagint) wall.wall_key(c.wall));
+    mine.keys.push_back(atom->tag[c.atom]);
+    mine.walls.push_back({&wall, c.atom, c.wall});
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -572,7 +602,7 @@ int FixCapillaryLiquid::distribute_over_ranks(const Protocol1Pairs &mine, double
                                               std::vector<double> &volumes, double *result)
 {
   const int nprocs = comm->nprocs, me = comm->me;
-  int nmine = (int) mine.where.size();
+  int nmine = (int) (mine.where.size() + mine.walls.size());
   std::vector<int> counts(nprocs), displs(nprocs), counts3(nprocs), displs3(nprocs),
       counts2(nprocs), displs2(nprocs);
   MPI_Gather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
@@ -714,5 +744,21 @@ void FixCapillaryLiquid::apply_volumes(const Protocol1Pairs &mine,
       if (now && !was) bridges->n_formed += 1.0;
       if (was && !now) bridges->n_ruptured += 1.0;
     }
+  }
+  for (size_t k = 0; k < mine.walls.size(); k++) {
+    const Protocol1Pairs::WallEntry &entry = mine.walls[k];
+    const size_t e = mine.where.size() + k;
+    cb_bridge *bridge = entry.fix->bridge_at(entry.atom, entry.wall);
+    const int was = bridge->active != 0.0;
+    const int status = cb_bridge_set_volume(entry.fix->law_of(entry.atom), radius[entry.atom],
+                                            CB_PLANE, volumes[e], bridge);
+    if (status != CB_OK)
+      error->one(FLERR, "fix capillary/liquid protocol1: the redistribution's wall bridge of "
+                 "atom {} (radius {}), fix {}: gap {}, volume {}: {}", atom->tag[entry.atom],
+                 radius[entry.atom], entry.fix->id, mine.geometry[3 * e + 2], volumes[e],
+                 cb_status_message((cb_status) status));
+    const int now = bridge->active != 0.0;
+    if (now && !was) bridges->n_formed += 1.0;
+    if (was && !now) bridges->n_ruptured += 1.0;
   }
 }

@@ -142,6 +142,7 @@ class FixCapillaryLiquid : public Fix {
   struct Protocol1Pairs;
   int protocol1(double total, double &alpha, double &largest_volume);
   void gather_candidates(Protocol1Pairs &mine);
+  void gather_wall_candidates(FixCapillaryWall &wall, Protocol1Pairs &mine);
   int distribute_over_ranks(const Protocol1Pairs &mine, double total,
                             std::vector<double> &volumes, double *result);
   int distribute_on_root(const cb_law *law, const std::vector<double> &geometry,

@@ -39,7 +39,8 @@ using MathConst::MY_PI;
 
 FixCapillaryWall::FixCapillaryWall(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), nwalls(0), wall_angle(-1.0), volume_given(-1.0), key_base(0),
-    state(nullptr), bridges(nullptr), liquid(nullptr), per_atom_liquid(0), liquid_groupbit(0),
+    state(nullptr), bridges(nullptr), liquid(nullptr), per_atom_liquid(0), protocol1(0),
+    liquid_groupbit(0),
     census_step(-1), timestep_warned(0)
 {
   parse_walls(narg, arg);
@@ -140,10 +141,12 @@ void FixCapillaryWall::init()
   liquid = found.empty() ? nullptr : dynamic_cast<FixCapillaryLiquid *>(found.front());
   per_atom_liquid = liquid && capillary_liquid_per_atom(liquid->mode);
   liquid_groupbit = liquid ? liquid->groupbit : 0;
-  if (liquid && liquid->mode == LIQUID_PROTOCOL1)
-    error->all(FLERR, "fix capillary/wall: fix capillary/liquid protocol1 does not distribute "
-               "liquid to walls yet: allowed with walls are fixed, protocol2, protocol3");
-  if (per_atom_liquid && volume_given > 0.0)
+  protocol1 = liquid && liquid->mode == LIQUID_PROTOCOL1;
+  if (protocol1 && wall_angle >= 0.0)
+    error->all(FLERR, "fix capillary/wall: keyword angle with fix capillary/liquid protocol1: "
+               "Protocol 1 distributes the liquid with one law, the grains' (their contact "
+               "angle); leave out angle, or use protocol2 or protocol3");
+  if (liquid && liquid->mode != LIQUID_FIXED && volume_given > 0.0)
     error->all(FLERR, "fix capillary/wall: keyword volume is for liquid mode fixed; under fix "
                "capillary/liquid {} the grains' free liquid forms the wall bridges",
                liquid->mode_name());
@@ -320,6 +323,30 @@ void FixCapillaryWall::contacts(std::vector<Contact> &out) const
 }
 
 /* ----------------------------------------------------------------------
+   Protocol 1's candidates: each owned grain of a wet type in the group and each wall
+   within the rupture distance of a bridge of this volume (the largest it can receive)
+------------------------------------------------------------------------- */
+
+void FixCapillaryWall::candidates(std::vector<Contact> &out, double volume) const
+{
+  out.clear();
+  const int *mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const cb_law *law = laws[atom_type(i)];
+    if (!(mask[i] & groupbit) || !law) continue;
+    double reach = 0.0;
+    const int status = cb_rupture_distance(law, atom->radius[i], CB_PLANE, volume, &reach);
+    if (status != CB_OK) fail(status, "Protocol 1 reach", i, NAN, volume);
+    const int wet = !liquid_groupbit || (mask[i] & liquid_groupbit);
+    for (int w = 0; w < nwalls; w++) {
+      double offset;
+      const double gap = wall_gap(i, w, offset);
+      if (gap <= reach) out.push_back({i, w, gap, offset, wet});
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
    the force evaluation: each grain's wall bridges, their capillary (and viscous) force
 ------------------------------------------------------------------------- */
 
@@ -377,6 +404,8 @@ double FixCapillaryWall::bridge_force(int i, int w, double gap, cb_bridge *bridg
     status = cb_bridge_step(law, r, CB_PLANE, gap, available, bridge, &transition, &released,
                             &capillary);
     if (status != CB_OK) fail(status, "bridge step", i, gap, available);
+    // Protocol 1: a broken bridge's liquid waits in the pool for the next distribution
+    if (protocol1) bridges->pool_released += released;
   } else if (bridge->active == 0.0) {
     if (!wet || !cb_bridge_may_form(bridge, gap)) return 0.0;
     double offer = liquid->offer[i], wall_share = 0.0;

@@ -10,7 +10,9 @@
    viscous force.  The bridge of each grain and wall lives in a per-atom array of the fix
    (it migrates with the atom and is written to restart files).
    The liquid: in liquid mode fixed (or without fix capillary/liquid) a bridge forms at
-   contact with the type pair's volume (or this fix's volume V); under Protocols 2 and 3
+   contact with the type pair's volume (or this fix's volume V); Protocol 1 distributes
+   the liquid over the grain pairs and the grain-wall pairs (candidates()); under Protocols
+   2 and 3
    fix capillary/liquid moves the grain's free liquid into the wall bridge and, at rupture,
    all of it back to the grain (the wall holds none): it advances these bridges with the
    pair's, through contacts() below.  See doc/fix_capillary_wall.rst.
@@ -67,6 +69,8 @@ class FixCapillaryWall : public Fix {
     int wet;          // the grain may form a bridge (the liquid fix's group)
   };
   void contacts(std::vector<Contact> &out) const;
+  // Protocol 1's: the grains within the rupture distance of a bridge of this volume
+  void candidates(std::vector<Contact> &out, double volume) const;
   cb_bridge *bridge_at(int atom, int wall) const
   {
     return reinterpret_cast<cb_bridge *>(&state[atom][wall * CB_BRIDGE_DOUBLES]);
@@ -91,6 +95,7 @@ class FixCapillaryWall : public Fix {
   CapillaryBridges *bridges;   // pair gran/capillary's type pairs and bridge events
   FixCapillaryLiquid *liquid;  // nullptr: no fix capillary/liquid
   int per_atom_liquid;         // Protocols 2, 3: the liquid fix advances the bridges
+  int protocol1;               // Protocol 1: the liquid fix distributes, broken ones pool
   int liquid_groupbit;
   std::vector<cb_law> own_laws;          // per type: the law at the wall's angle
   std::vector<const cb_law *> laws;      // per type: the law of a wall bridge (nullptr: dry)

@@ -40,8 +40,8 @@ expect wall_keyword "fix capillary/wall: unknown keyword 'height': allowed angle
     gran/capillary "$GOOD" none " " "" "zplane -0.001 NULL height 2"
 expect wall_value "fix capillary/wall: keyword 'angle' needs a value" \
     gran/capillary "$GOOD" none " " "" "zplane -0.001 NULL angle"
-expect wall_protocol1 "fix capillary/wall: fix capillary/liquid protocol1 does not distribute liquid to walls yet" \
-    gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728" protocol1 "liquid 1e-11" "" "zplane -0.001 NULL"
+expect wall_angle_protocol1 "fix capillary/wall: keyword angle with fix capillary/liquid protocol1: Protocol 1 distributes the liquid with one law" \
+    gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728" protocol1 "liquid 1e-11" "" "zplane -0.001 NULL angle 30"
 expect wall_volume_protocol "fix capillary/wall: keyword volume is for liquid mode fixed" \
     gran/capillary "100 40 0.3 0.4 law richefeu gamma 0.0728" protocol2 "liquid 1e-11" "" "zplane -0.001 NULL volume 1e-12"
 expect wall_pair "fix capillary/wall requires pair style gran/capillary" \

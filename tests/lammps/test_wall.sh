@@ -11,8 +11,9 @@
 # mean-cosine angle of grain and wall (cb_wall_contact_angle).
 # Under Protocols 2 and 3 the sphere's free liquid forms the bridge and returns to it at
 # rupture; 192 grains settling on a wet floor (in.wall_liquid, fix wall/gran's contact)
-# conserve the liquid at every output on 1, 2 and 3 ranks and across a restart file (the
-# wall bridges and their liquid come back).
+# under Protocols 1 (the floor's pairs among the candidates), 2 and 3 conserve the liquid
+# at every output on 1, 2 and 3 ranks and across a restart file (the wall bridges and
+# their liquid come back).
 . "$(dirname "$0")/lib.sh" "$@"
 
 R=5e-4 V=2e-11 VX=0.02 VZ=1 DT=2e-6 N=200
@@ -137,7 +138,7 @@ floor() {  # floor LOG NP MODE RESTART
         -var nsteps 3000 -var restart "$4" -var out "$1" >/dev/null 2>&1 ||
         { fail "$(basename "$1"): LAMMPS failed: $(grep -h -m1 ERROR "$1" "$1.screen")"; return 1; }
 }
-for mode in protocol2 protocol3; do
+for mode in protocol1 protocol2 protocol3; do
     for np in 1 2 3; do
         log="$TMP/floor-$mode-np$np.log"
         floor "$log" $np $mode no || continue
