@@ -157,6 +157,8 @@ void FixCapillaryWall::init()
     key_base += static_cast<FixCapillaryWall *>(other)->nwalls;
   }
   derive_laws();
+  // before the run's first force evaluation, where fix capillary/liquid advances them
+  check_states();
 }
 
 /* ----------------------------------------------------------------------
@@ -206,7 +208,6 @@ int FixCapillaryWall::atom_type(int atom_index) const
 
 void FixCapillaryWall::setup(int vflag)
 {
-  check_states();
   check_timestep();
   post_force(vflag);
 }
