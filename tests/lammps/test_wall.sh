@@ -168,4 +168,17 @@ for mode in protocol1 protocol2 protocol3; do
         { fail "$(cat "$TMP/why")"; continue; }
     cat "$TMP/why"
 done
+
+# the restart file of one wall read by a fix with two: an error naming both counts
+checks=$((checks + 1))
+log="$TMP/floor-reread.log"
+if lmp 1 "$log" -in "$DECKS/in.wall_liquid" -var mode protocol2 -var reread yes \
+    -var out "$TMP/floor-protocol2-restart.log" >/dev/null 2>&1; then
+    fail "a restart file of one wall read with two walls: no error"
+else
+    line=$(grep -h -m1 ERROR "$log" "$log.screen" | head -1)
+    echo "$line" | grep -q "the restart file holds 7 values per atom for this fix, the input's 2 wall(s) need 14" ||
+        fail "restart with another wall count: '$line'"
+    echo "reread: $line"
+fi
 finish
