@@ -184,8 +184,7 @@ void FixCapillaryLiquid::update_bridges()
 
 void FixCapillaryLiquid::update_wall_bridges(FixCapillaryWall &wall)
 {
-  std::vector<FixCapillaryWall::Contact> contacts;
-  wall.contacts(contacts);
+  const std::vector<FixCapillaryWall::Contact> &contacts = wall.contacts();
   const double *radius = atom->radius;
   const tagint *tag = atom->tag;
   for (const FixCapillaryWall::Contact &c : contacts) {

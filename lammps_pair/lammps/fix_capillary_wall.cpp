@@ -307,8 +307,9 @@ double FixCapillaryWall::wall_gap(int i, int w, double &offset) const
   return side[w] * (atom->x[i][axis[w]] - position[w]) - radius;
 }
 
-void FixCapillaryWall::contacts(std::vector<Contact> &out) const
+const std::vector<FixCapillaryWall::Contact> &FixCapillaryWall::contacts()
 {
+  std::vector<Contact> &out = step_contacts;
   out.clear();
   const int *mask = atom->mask;
   for (int i = 0; i < atom->nlocal; i++) {
@@ -321,6 +322,7 @@ void FixCapillaryWall::contacts(std::vector<Contact> &out) const
       out.push_back({i, w, gap, offset, wet});
     }
   }
+  return out;
 }
 
 /* ----------------------------------------------------------------------

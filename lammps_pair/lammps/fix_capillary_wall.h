@@ -68,7 +68,8 @@ class FixCapillaryWall : public Fix {
     double offset;    // height of the contact point above the grain's centre (Protocol 3)
     int wet;          // the grain may form a bridge (the liquid fix's group)
   };
-  void contacts(std::vector<Contact> &out) const;
+  // this step's (kept in the fix, so that no step allocates)
+  const std::vector<Contact> &contacts();
   // Protocol 1's: the grains within the rupture distance of a bridge of this volume
   void candidates(std::vector<Contact> &out, double volume) const;
   cb_bridge *bridge_at(int atom, int wall) const
@@ -100,6 +101,7 @@ class FixCapillaryWall : public Fix {
   std::vector<cb_law> own_laws;          // per type: the law at the wall's angle
   std::vector<const cb_law *> laws;      // per type: the law of a wall bridge (nullptr: dry)
   std::vector<double> volumes;           // per type: the volume a bridge forms with (fixed)
+  std::vector<Contact> step_contacts;    // contacts()'s
 
   double values[5];            // bridges, liquid, force on the walls (x, y, z)
   double wall_force[3];        // this rank's, at the last force evaluation
