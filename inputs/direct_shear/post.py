@@ -180,6 +180,7 @@ def write_runs(runs, out):
         rows.append(dict(engine=p["engine"], size=p["size"], protocol=p["protocol"], bonds=p["bonds"],
                          law=p["law"], seed=p.get("seed", "deck"), sigma_Pa=float(p["sigma"]),
                          w_percent=float(p["w"]),
+                         vshear_m_s=p.get("vshear", ""),   # runs before -var vshear: the size's
                          sigma_n_Pa=s["sigma_n"], sigma_plate_Pa=s["sigma_plate"],
                          tau_plateau_Pa=s["tau"], tau_plateau_std_Pa=s["tau_std"],
                          tau_peak_Pa=s["tau_peak"], plateau_from_D=s["plateau_from"],

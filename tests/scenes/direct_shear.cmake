@@ -29,3 +29,12 @@ foreach(_ds_engine lammps liggghts)
     LABELS "scenes" TIMEOUT 120 ENVIRONMENT "${_ds_env}"
     PASS_REGULAR_EXPRESSION "ERROR: need sigma > 0 Pa and 0 <= w < 20, w in percent of the grain mass \\(1 = 1 %, not a fraction\\), got sigma 200, w 20")
 endforeach()
+# the shear speed must be positive (-var vshear, the rate sweep's knob)
+foreach(_ds_engine lammps liggghts)
+  add_test(NAME direct_shear_${_ds_engine}_refuses_vshear
+           COMMAND ${PROJECT_SOURCE_DIR}/scripts/scene.sh ${_ds_engine} direct_shear -np 1 -size smoke
+                   -out ${CMAKE_CURRENT_BINARY_DIR}/scenes/direct_shear/refusals_vshear_${_ds_engine} -var vshear 0)
+  set_tests_properties(direct_shear_${_ds_engine}_refuses_vshear PROPERTIES
+    LABELS "scenes" TIMEOUT 120 ENVIRONMENT "${_ds_env}"
+    PASS_REGULAR_EXPRESSION "vshear \\(the speed of the upper ring\\) must be > 0")
+endforeach()

@@ -25,3 +25,13 @@ foreach(_engine lammps liggghts)
   set_tests_properties(scene_split_bottom_${_engine}_check PROPERTIES
     LABELS "scenes" TIMEOUT 600 FIXTURES_REQUIRED split_bottom_${_engine})
 endforeach()
+# the rotation period must be positive (-var period, the rate sweep's knob)
+foreach(_engine lammps liggghts)
+  add_test(NAME scene_split_bottom_${_engine}_refuses_period
+           COMMAND ${PROJECT_SOURCE_DIR}/scripts/scene.sh ${_engine} split_bottom -np 1 -size smoke
+                   -out ${CMAKE_CURRENT_BINARY_DIR}/scenes/split_bottom/refusals_${_engine} -var period 0)
+  set_tests_properties(scene_split_bottom_${_engine}_refuses_period PROPERTIES
+    LABELS "scenes" TIMEOUT 120
+    ENVIRONMENT "CAPBRIDGE_SKIP_CONFIGURE=1;CAPBRIDGE_PLUGIN=$<TARGET_FILE:capbridgeplugin>"
+    PASS_REGULAR_EXPRESSION "period \\(one turn of the rotating outer part\\) must be > 0 s, not 0")
+endforeach()
