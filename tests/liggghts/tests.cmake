@@ -126,6 +126,11 @@ add_test(NAME liggghts_viscous
 add_test(NAME liggghts_easo_viscous
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/easo_viscous.py ${CAPBRIDGE_LIGGGHTS_ENV}
                  --workdir ${_liggghts_work}/easo_viscous)
+# a wet head-on collision: restitution against St, the lubrication impulse (as the LAMMPS
+# test_viscous.sh's wet collision)
+add_test(NAME liggghts_wet_collision
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/wet_collision.py ${CAPBRIDGE_LIGGGHTS_ENV}
+                 --workdir ${_liggghts_work}/wet_collision)
 set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts_bad_input
                      liggghts_friction liggghts_held liggghts_beyond_reach
                      liggghts_easo_comparison liggghts_between_runs
@@ -133,5 +138,5 @@ set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts
                      liggghts_timestep liggghts_protocols liggghts_protocol1_reference
                      liggghts_protocols_restart liggghts_protocol3_receiver
                      liggghts_corrupt_restart liggghts_remove liggghts_remove_later
-                     liggghts_viscous liggghts_easo_viscous
+                     liggghts_viscous liggghts_easo_viscous liggghts_wet_collision
                      PROPERTIES LABELS "liggghts" TIMEOUT 600)
