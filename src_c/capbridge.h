@@ -405,7 +405,10 @@ typedef struct cb_radius_range {
  * must be kept whatever its radii); reach = design_rupture (1 + CB_REACH_MARGIN); and
  * reach_ratio, the largest reach / (r1 + r2) over the grid, for an engine whose neighbor
  * distance is a multiple of the radius sum (LIGGGHTS: contact_distance_factor =
- * 1 + reach_ratio).  All three 0 for volume 0.  Outputs may be NULL. */
+ * 1 + reach_ratio).  range2 may be the plane {CB_PLANE, CB_PLANE} (a wall's bridges):
+ * the grid then runs over range1 alone and reach_ratio is over r1 (LIGGGHTS visits a
+ * grain-wall pair while its gap is below (contact_distance_factor - 1) r1).  All three 0
+ * for volume 0.  Outputs may be NULL. */
 cb_status cb_reach(const cb_law *law, cb_radius_range range1, cb_radius_range range2,
                    double volume, double *design_rupture, double *reach, double *reach_ratio);
 

@@ -17,24 +17,29 @@ cb_status cb_reach(const cb_law *law, cb_radius_range range1, cb_radius_range ra
     if (!law->prepared) return CB_ERR_RANGE;
     if (!isfinite(volume)) return CB_ERR_NOT_FINITE;
     if (volume < 0.0) return CB_ERR_NEGATIVE;
-    if (!range_valid(range1) || !range_valid(range2)) return CB_ERR_RANGE;
+    /* surface 2 a plane (a wall): the one "radius" CB_PLANE, and the engine's distance a
+     * multiple of r1 alone (LIGGGHTS visits a grain-wall pair within (factor - 1) r1) */
+    const int plane = cb_is_plane(range2.min) && cb_is_plane(range2.max);
+    if (!range_valid(range1) || !(plane || range_valid(range2))) return CB_ERR_RANGE;
     double largest = 0.0, ratio = 0.0;
     if (volume > 0.0) {
         cb_law extended = *law; /* shallow: the table stays the caller's */
         extended.validity = CB_VALIDITY_EXTEND;
         enum { STEPS = 4 };
         for (int a = 0; a <= STEPS; ++a)
-            for (int b = 0; b <= STEPS; ++b) {
+            for (int b = 0; b <= (plane ? 0 : STEPS); ++b) {
                 /* the ends exactly (min + (max - min) * 1 may round off max) */
                 double r1 = a == STEPS ? range1.max
                                        : range1.min + (range1.max - range1.min) * a / STEPS;
-                double r2 = b == STEPS ? range2.max
-                                       : range2.min + (range2.max - range2.min) * b / STEPS;
+                double r2 = plane ? CB_PLANE
+                            : b == STEPS ? range2.max
+                                         : range2.min + (range2.max - range2.min) * b / STEPS;
                 double d = 0.0;
                 cb_status status = cb_rupture_distance(&extended, r1, r2, volume, &d);
                 if (status != CB_OK) return status;
                 if (d > largest) largest = d;
-                if (d / (r1 + r2) > ratio) ratio = d / (r1 + r2);
+                const double distance_unit = plane ? r1 : r1 + r2;
+                if (d / distance_unit > ratio) ratio = d / distance_unit;
             }
     }
     const double margin = 1.0 + CB_REACH_MARGIN;

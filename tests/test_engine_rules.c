@@ -57,6 +57,18 @@ static void reach(void)
     CHECK(ratio >= dense_ratio);
     printf("reach, willett/unequal over 0.1-1 mm: grid %.6g m, dense scan %.6g m, reach %.6g m\n",
            design, dense, r);
+    /* a wall (range2 the plane): Lian's distance again (it has no radius), the ratio over
+     * the smallest r1 alone; Willett's largest at the smallest grain, as for a pair */
+    const cb_radius_range plane = {CB_PLANE, CB_PLANE}, half_plane = {0.5e-3, CB_PLANE};
+    CHECK_STATUS(cb_reach(&lian, small, plane, v, &design, &r, &ratio), CB_OK);
+    CHECK_REL(design, lian_d, 1e-14);
+    CHECK_REL(ratio, lian_d * margin / 0.4e-3, 1e-14);
+    CHECK_STATUS(cb_reach(&willett, small, plane, v, &design, &r, &ratio), CB_OK);
+    CHECK_STATUS(cb_rupture_distance(&willett, 0.4e-3, CB_PLANE, v, &corner), CB_OK);
+    CHECK_REL(design, corner, 1e-15);
+    CHECK_REL(ratio, corner * margin / 0.4e-3, 1e-14);
+    CHECK_STATUS(cb_reach(&lian, small, half_plane, v, NULL, &r, NULL), CB_ERR_RANGE);
+    CHECK_STATUS(cb_reach(&lian, plane, small, v, NULL, &r, NULL), CB_ERR_RANGE);
     /* a strict law reaches as far as its extension: a bridge that exists is kept */
     cb_law strict = make_law(CB_MODEL_WILLETT, 0.0, NULL);
     strict.validity = CB_VALIDITY_STRICT;
