@@ -5,7 +5,9 @@
  *
  * The law of a pair of types is the core's cb_law of the model's keywords (law, rupture,
  * overlap, validity, and the law's own keywords such as richefeu_c), the surface tension,
- * the mean of the two types' contact angles and (viscous on) the pair's liquidViscosity and
+ * the mean of the two types' contact angles (at a wall, of a grain's type and the wall's:
+ * the core's cb_wall_contact_angle, the angle of the mean cosine, as LAMMPS's fix
+ * capillary/wall) and (viscous on) the pair's liquidViscosity and
  * viscousMinGap.  The laws are built again only when one of these changed (the table law
  * builds its table in cb_law_prepare), so that a run after a run costs nothing here.
  */
@@ -84,11 +86,12 @@ class PairLaws {
     ~PairLaws() { release(); }
 
     /* The laws of atom types 1..ntypes; contact_angle [rad] per type; viscosity [Pa s] and
-     * min_gap [m] per pair of types, or NULL (viscous off).  An error (all ranks: the same
-     * input) for a law the core refuses. */
+     * min_gap [m] per pair of types, or NULL (viscous off); wall: the laws of a fix
+     * wall/gran (grain type, wall type).  An error (all ranks: the same input) for a law the
+     * core refuses. */
     void build(LAMMPS_NS::Error *error, const LawWords &words, const double surface_tension,
                const double *contact_angle, double **viscosity, double **min_gap,
-               const int ntypes)
+               const int ntypes, const bool wall)
     {
         refuse_other_laws_keywords(error, words);
         ntypes_ = ntypes;
@@ -96,7 +99,10 @@ class PairLaws {
         std::vector<int> index((ntypes + 1) * (ntypes + 1), 0);
         for (int a = 1; a <= ntypes; ++a)
             for (int b = 1; b <= ntypes; ++b) {
-                Distinct d = {0.5 * (contact_angle[a] + contact_angle[b]), 0.0, 0.0};
+                const double theta =
+                    wall ? cb_wall_contact_angle(contact_angle[a], contact_angle[b])
+                         : 0.5 * (contact_angle[a] + contact_angle[b]);
+                Distinct d = {theta, 0.0, 0.0};
                 if (viscosity && viscosity[a][b] > 0.0) {
                     d.viscosity = viscosity[a][b];
                     d.min_gap = min_gap[a][b];

@@ -28,7 +28,8 @@
        (the coefficients may have changed since the bridges formed).
      - parameters come from fix property/global (surfaceTension, contactAngle,
        bridgeVolume), per-particle free liquid from fix property/atom freeLiquid.
-     - walls are dry: a fix wall/gran with `cohesion capillary` adds no force.
+     - walls: in a fix wall/gran, the same model makes the bridges between grains and the
+       wall, fixed volume (capbridge_liggghts_wall.h).
      - beside this file: capbridge_liggghts_settings.h (the keywords), _laws.h (the law of
        each pair of atom types), _reach.h (how far
        LIGGGHTS visits a pair, the contact distance factor, and the bridges held beyond it,
@@ -36,7 +37,8 @@
        when liquid leaves with atoms or a new pair_style), _timestep.h (the time-step check
        against the capillary stiffness), _protocols.h (the keywords every and vmax, and
        Protocols 1 and 3: _protocol1.h, _protocol3.h; start and remove: _start.h), _viscous.h
-       (keyword viscous: the bridges' viscous force), _checks.h (the input's checks).
+       (keyword viscous: the bridges' viscous force), _checks.h (the input's checks), _wall.h
+       (the model in a fix wall/gran).
 
    Parallel consistency (LIGGGHTS requires `newton off` with contact history): a pair
    whose atoms live on two ranks is computed on both, each rank updating only its own
@@ -66,6 +68,7 @@ COHESION_MODEL(COHESION_CAPILLARY,capillary,9)
 #include "capbridge_liggghts_reach.h"
 #include "capbridge_liggghts_timestep.h"
 #include "capbridge_liggghts_viscous.h"
+#include "capbridge_liggghts_wall.h"
 #include "capbridge.h"
 #include "global_properties.h"
 #include "fix_property_atom.h"
@@ -142,20 +145,20 @@ namespace ContactModels {
       account_(lmp),
       reach_(lmp),
       timestep_(lmp),
-      protocols_(lmp)
+      protocols_(lmp),
+      wall_bridges_(lmp)
     {
-      // walls are dry: no history, no properties, no force
-      if (!wall_) {
-        // a cb_bridge, in its field order (none changes sign with the pair's order)
-        static_assert(CB_BRIDGE_DOUBLES == 7, "one history value per field of cb_bridge");
-        history_offset_ = hsetup->add_history_value("capillaryBridgeVolume", "0");
-        hsetup->add_history_value("capillaryBridgeActive", "0");
-        hsetup->add_history_value("capillaryBridgeRupture", "0");
-        hsetup->add_history_value("capillaryBridgeForceContact", "0");
-        hsetup->add_history_value("capillaryBridgeRadiusSum", "0");
-        hsetup->add_history_value("capillaryBridgeRadiusProduct", "0");
-        hsetup->add_history_value("capillaryBridgeInverseDecayLength", "0");
-      }
+      // a cb_bridge, in its field order (none changes sign with the pair's order); a wall's
+      // contact history has the same seven values
+      static_assert(CB_BRIDGE_DOUBLES == 7, "one history value per field of cb_bridge");
+      history_offset_ = hsetup->add_history_value("capillaryBridgeVolume", "0");
+      hsetup->add_history_value("capillaryBridgeActive", "0");
+      hsetup->add_history_value("capillaryBridgeRupture", "0");
+      hsetup->add_history_value("capillaryBridgeForceContact", "0");
+      hsetup->add_history_value("capillaryBridgeRadiusSum", "0");
+      hsetup->add_history_value("capillaryBridgeRadiusProduct", "0");
+      hsetup->add_history_value("capillaryBridgeInverseDecayLength", "0");
+      if (wall_) wall_bridges_.attach(hsetup, history_offset_);
     }
 
     void registerSettings(Settings & settings)
@@ -192,11 +195,20 @@ namespace ContactModels {
       per_atom_liquid_ = (liquid_ != "fixed");
       protocols_.post_settings(liquid_, error);  // (an error for a keyword it does not take)
       tally_ = (tally_word_ == "on");
-      if (wall_) return;
       if (law_given_) {
         if (cb_model_from_name(law_name_.c_str(), &model_) != CB_OK)
           fail_all("cohesion model capillary: law '" + law_name_ + "' is unknown; allowed: " +
                    cb_law_names());
+      }
+      if (wall_) {
+        // what the wall bridges do not have yet: said, not ignored
+        if (per_atom_liquid_)
+          fail_all("cohesion model capillary in a fix wall/gran takes liquid fixed (the wall "
+                   "bridges have bridgeVolume), not 'liquid " + liquid_ + "'");
+        if (tally_ || viscous_word_ == "on")
+          fail_all("cohesion model capillary in a fix wall/gran takes neither 'tally on' nor "
+                   "'viscous on' (the pair_style's tally counts the bridges between grains)");
+        return;
       }
       connect_internal_fixes();
       if (per_atom_liquid_) account_.create();
@@ -205,20 +217,15 @@ namespace ContactModels {
 
     void connectToProperties(PropertyRegistry & registry)
     {
-      if (wall_) {
-        if (comm->me == 0)
-          error->warning(FLERR, "cohesion model capillary: walls are dry, a fix wall/gran "
-                                "with 'cohesion capillary' adds no capillary force");
-        return;
-      }
       const char *caller = "cohesion model capillary";
       if (!law_given_)
         fail_all(std::string("cohesion model capillary needs 'law NAME' after "
-                             "'cohesion capillary' in pair_style gran; NAME is one of ") +
+                             "'cohesion capillary' in ") +
+                 (wall_ ? "fix wall/gran" : "pair_style gran") + "; NAME is one of " +
                  cb_law_names());
       if (force->cg_active())
         error->cg(FLERR, "cohesion model capillary");
-      if (force->newton_pair)
+      if (force->newton_pair && !wall_)
         error->all(FLERR, "cohesion model capillary requires 'newton off'");
 
       registry.registerProperty("surfaceTension", &MODEL_PARAMS::createSurfaceTension);
@@ -237,11 +244,15 @@ namespace ContactModels {
                                                   validity_, law_keywords_};
       if (viscous_word_ == "on") viscous_.connect(registry, error, ntypes_);
       laws_.build(error, words, surface_tension_, contact_angle_, viscous_.viscosity,
-                  viscous_.min_gap, ntypes_);
-      connect_per_atom();
+                  viscous_.min_gap, ntypes_, wall_);
       const capbridge_liggghts::ReachLaws laws = {&laws_.laws, &laws_.pair_law, ntypes_,
                                                   law_name_.c_str(),
                                                   rupture_.c_str(), validity_.c_str()};
+      if (wall_) {
+        wall_bridges_.connect(registry, laws, bridge_volume_);
+        return;
+      }
+      connect_per_atom();
       reach_.register_factor(registry, laws, per_atom_liquid_ ? NULL : bridge_volume_,
                              per_atom_liquid_ ? fix_free_->vector_atom : NULL,
                              protocols_.vmax(), history_offset_);
@@ -304,9 +315,9 @@ namespace ContactModels {
 
     void surfacesIntersect(SurfacesIntersectData & sidata, ForceData & i_forces, ForceData & j_forces)
     {
-      if (wall_) return;
-      const double gap = sidata.r - sidata.radsum;
-      const double capillary = pair_force(sidata, gap, sidata.en);
+      const double gap = sidata.r - sidata.radsum;  // a wall's radsum is the grain's radius
+      const double capillary =
+          wall_ ? wall_force(sidata, gap) : pair_force(sidata, gap, sidata.en);
       // sidata.Fn is left as the normal model set it, f_n^e + f_n^d: the tangential model
       // (called after this one) limits its force by mu |sidata.Fn|, Richefeu 2007 eq. 12
       // mu (f_n - f_n^c) with eq. 1's f_n = f_n^e + f_n^d + f_n^c: the contact force alone
@@ -315,7 +326,6 @@ namespace ContactModels {
 
     void surfacesClose(SurfacesCloseData & scdata, ForceData & i_forces, ForceData & j_forces)
     {
-      if (wall_) return;
       // dry (no bridge, no removed bridge's mark: cb_bridge_dry) and certainly apart: no
       // force, and no bridge can form (only at contact), so no square root and no call into
       // the core; not at a run's setup, where pair_force checks every stored state once (a
@@ -333,7 +343,7 @@ namespace ContactModels {
       const double en[3] = {scdata.delta[0] * rinv, scdata.delta[1] * rinv,
                             scdata.delta[2] * rinv};
       const double gap = r - scdata.radsum;
-      const double capillary = pair_force(scdata, gap, en);
+      const double capillary = wall_ ? wall_force(scdata, gap) : pair_force(scdata, gap, en);
       if (capillary > 0.0) {
         apply(capillary, en, i_forces, j_forces);
         scdata.has_force_update = true;
@@ -343,6 +353,13 @@ namespace ContactModels {
     }
 
   private:
+    /* The bridge of a grain and the wall of a fix wall/gran (j is the wall): fixed volume. */
+    double wall_force(SurfacesCloseData & d, const double gap)
+    {
+      return wall_bridges_.force(laws_.of(d.itype, d.jtype), d, gap,
+                                 bridge_volume_[d.itype][d.jtype]);
+    }
+
     /* The bridge of one pair: its transition (in updating passes) and its force. */
     double pair_force(SurfacesCloseData & d, const double gap, const double *en)
     {
@@ -742,6 +759,7 @@ namespace ContactModels {
     capbridge_liggghts::TimestepCheck timestep_;
     capbridge_liggghts::Protocols protocols_;
     capbridge_liggghts::ViscousForce viscous_;
+    capbridge_liggghts::WallBridges wall_bridges_;  // in a fix wall/gran
   };
 }
 }

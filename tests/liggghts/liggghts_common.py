@@ -201,12 +201,14 @@ def run(command, cwd, what, timeout=600):
     return result
 
 
-def liggghts(env, deck, variables, workdir, ranks=1, log="log.liggghts"):
-    """Run LIGGGHTS on `deck` with -var NAME VALUE pairs; returns (returncode, log text)."""
+def liggghts(env, deck, variables, workdir, ranks=1, log="log.liggghts", screen="none"):
+    """Run LIGGGHTS on `deck` with -var NAME VALUE pairs; returns (returncode, log text).
+    screen: a file for -screen where a deck reads a mesh (LIGGGHTS 3.8.0's mesh import writes
+    to the screen unchecked: with -screen none, fix mesh/surface crashes)."""
     command = []
     if ranks > 1:
         command += shlex.split(env["LIGGGHTS_MPIRUN"]) + ["-np", str(ranks)]
-    command += [env["LIGGGHTS_BINARY"], "-in", deck, "-log", log, "-screen", "none"]
+    command += [env["LIGGGHTS_BINARY"], "-in", deck, "-log", log, "-screen", screen]
     for name, value in variables:
         command += ["-var", name, str(value)]
     result = run(command, workdir, deck)

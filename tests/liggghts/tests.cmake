@@ -24,7 +24,7 @@ add_test(NAME liggghts_pulloff_mpi
 add_test(NAME liggghts_wet
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/wet.py ${CAPBRIDGE_LIGGGHTS_ENV}
                  --workdir ${_liggghts_work}/wet)
-# bad input: an error naming the problem; walls are dry
+# bad input: an error naming the problem (a wall without a law too)
 add_test(NAME liggghts_bad_input
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/bad_input.py ${CAPBRIDGE_LIGGGHTS_ENV}
                  --workdir ${_liggghts_work}/bad_input)
@@ -131,6 +131,16 @@ add_test(NAME liggghts_easo_viscous
 add_test(NAME liggghts_wet_collision
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/wet_collision.py ${CAPBRIDGE_LIGGGHTS_ENV}
                  --workdir ${_liggghts_work}/wet_collision)
+# bridges between a grain and a wall (cohesion capillary in fix wall/gran, liquid fixed): a
+# primitive wall and a mesh against the core's sphere-plane pair (capbridge force --plane),
+# through a restart file; a short skin and a liquid protocol refused
+add_test(NAME liggghts_wall
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/wall.py
+                 $<TARGET_FILE:capbridge_cli> ${CAPBRIDGE_LIGGGHTS_ENV}
+                 --workdir ${_liggghts_work}/wall)
+# our model headers without a warning at -Wall -Wextra (LIGGGHTS builds them with its flags)
+add_test(NAME liggghts_model_warnings
+         COMMAND ${_liggghts_dir}/model_warnings.sh ${CAPBRIDGE_LIGGGHTS_ENV})
 set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts_bad_input
                      liggghts_friction liggghts_held liggghts_beyond_reach
                      liggghts_easo_comparison liggghts_between_runs
@@ -139,4 +149,4 @@ set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts
                      liggghts_protocols_restart liggghts_protocol3_receiver
                      liggghts_corrupt_restart liggghts_remove liggghts_remove_later
                      liggghts_viscous liggghts_easo_viscous liggghts_wet_collision
-                     PROPERTIES LABELS "liggghts" TIMEOUT 600)
+                     liggghts_wall liggghts_model_warnings PROPERTIES LABELS "liggghts" TIMEOUT 600)

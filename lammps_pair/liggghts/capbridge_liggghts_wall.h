@@ -1,0 +1,228 @@
+/* capbridge_liggghts_wall.h — `cohesion capillary` in a fix wall/gran: the bridge between a
+ * grain and a wall (a mesh or a primitive wall).
+ *
+ * Part of capbridge (lammps_pair/liggghts/). Compiled inside LIGGGHTS: C++98 and C++11.
+ *
+ * fix wall/gran instantiates the model for its walls with its own keywords after `cohesion
+ * capillary` (law, rupture, overlap, validity, the law's own).  Every rule is the core's
+ * sphere-plane pair (r2 = CB_PLANE), as LAMMPS's fix capillary/wall: the law of the grain's
+ * atom type and the wall's (the contact angle of the mean cosine, cb_wall_contact_angle), a
+ * bridge of bridgeVolume (grain type, wall type) formed at contact, held to its rupture
+ * distance, its force on the grain (cb_bridge_step, cb_bridge_force).  Its state is the same
+ * seven values as a pair's, in the wall's contact history (per grain for a primitive wall,
+ * per triangle for a mesh: restart files keep it).  Liquid fixed only: the liquid of a broken
+ * bridge leaves, as between grains with liquid fixed (the protocols at walls are LAMMPS's).
+ *
+ * Reach: fix wall/gran calls the model for a grain apart from the wall only while its gap is
+ * below (contact_distance_factor - 1) r, so the wall registers the factor of its design
+ * rupture distance (cb_reach with the plane).  A mesh's grain list is built with that factor;
+ * a primitive wall's with the neighbor skin alone (LIGGGHTS 3.8.0, FixWallGran::pre_force), so
+ * a bridged grain stays in it only if the skin covers the rupture distance: an error otherwise,
+ * naming the skin needed.
+ */
+#ifndef CAPBRIDGE_LIGGGHTS_WALL_H_
+#define CAPBRIDGE_LIGGGHTS_WALL_H_
+
+#include "atom.h"
+#include "capbridge.h"
+#include "capbridge_liggghts_reach.h"
+#include "contact_interface.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_mesh_surface.h"
+#include "fix_wall_gran.h"
+#include "neighbor.h"
+#include "pointers.h"
+#include "property_registry.h"
+#include "update.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace capbridge_liggghts {
+
+class WallBridges : protected LAMMPS_NS::Pointers {
+  public:
+    explicit WallBridges(LAMMPS_NS::LAMMPS *lmp)
+        : Pointers(lmp), wall_(NULL), history_offset_(-1), ntypes_(0), warned_beyond_(false)
+    {
+    }
+
+    /* In the model's constructor: the fix wall/gran that made it and the offset of the seven
+     * history values. */
+    void attach(LIGGGHTS::IContactHistorySetup *setup, const int history_offset)
+    {
+        wall_ = dynamic_cast<LAMMPS_NS::FixWallGran *>(setup);
+        history_offset_ = history_offset;
+    }
+
+    /* At the init of every run (fix wall/gran's init, before the neighbor lists): the design
+     * rupture distance of the wall's type with every grain type, the contact distance factor
+     * that covers it, and a primitive wall's skin. */
+    void connect(PropertyRegistry &registry, const ReachLaws &laws,
+                 double **bridge_volume)
+    {
+        if (!wall_) error->all(FLERR, "cohesion model capillary: a wall model outside fix "
+                                      "wall/gran (internal)");
+        ntypes_ = laws.ntypes;
+        design_rupture_.assign((ntypes_ + 1) * (ntypes_ + 1), 0.0);
+        // a primitive wall's type is its own; a mesh wall's is each mesh's (fix wall/gran
+        // sets atom_type_wall() per mesh only while it computes)
+        std::vector<int> wall_types;
+        if (wall_->is_mesh_wall())
+            for (int m = 0; m < wall_->n_meshes(); ++m)
+                wall_types.push_back(wall_->mesh_list()[m]->atomTypeWall());
+        else
+            wall_types.push_back(wall_->atom_type_wall());
+        for (size_t w = 0; w < wall_types.size(); ++w) {
+            if (wall_types[w] >= 1 && wall_types[w] <= ntypes_) continue;
+            char text[200];
+            snprintf(text, sizeof text, "cohesion model capillary: the wall's atom type %d is "
+                     "not one of the types 1..%d of bridgeVolume and contactAngle",
+                     wall_types[w], ntypes_);
+            error->all(FLERR, text);
+        }
+        const double rmin = registry.min_radius(), rmax = registry.max_radius();
+        if (!(rmin > 0.0) || !(rmax > 0.0) || rmin > 1e100) return;
+        const cb_radius_range radii = {rmin, rmax}, plane = {CB_PLANE, CB_PLANE};
+        double ratio = 0.0, largest = 0.0;
+        int largest_type = wall_types[0];
+        for (size_t w = 0; w < wall_types.size(); ++w) {
+            const int wall_type = wall_types[w];
+            for (int a = 1; a <= ntypes_; ++a) {
+                const double volume = bridge_volume[a][wall_type];
+                double rupture = 0.0, pair_ratio = 0.0;
+                const cb_status status = cb_reach(laws.of(a, wall_type), radii, plane, volume,
+                                                  &rupture, NULL, &pair_ratio);
+                if (status != CB_OK) {
+                    char text[400];
+                    snprintf(text, sizeof text, "cohesion model capillary: no reach for wall "
+                             "bridges of %g m^3 (atom types %d and the wall's %d) for radii %g "
+                             "to %g m: law %s: %s", volume, a, wall_type, rmin, rmax, laws.law,
+                             cb_status_message(status));
+                    error->all(FLERR, text);
+                }
+                design_rupture_[a * (ntypes_ + 1) + wall_type] = rupture;
+                if (rupture > largest) largest_type = wall_type;
+                largest = std::max(largest, rupture);
+                ratio = std::max(ratio, pair_ratio);
+            }
+        }
+        if (!(ratio > 0.0)) return;
+        double factor = 1.0 + ratio;  // rounded up, so that it covers the ratio
+        if (factor - 1.0 < ratio) factor = nextafter(factor, 2.0);
+        neighbor->register_contact_dist_factor(factor);
+        const double needed = largest * (1.0 + CB_REACH_MARGIN);
+        if (!wall_->is_mesh_wall() && !(neighbor->skin >= needed)) {
+            char text[500];
+            snprintf(text, sizeof text, "cohesion model capillary: fix %s is a primitive wall, "
+                     "whose grain list LIGGGHTS builds with the neighbor skin alone; its "
+                     "bridges (bridgeVolume with the wall's type %d) rupture up to %g m from "
+                     "it, beyond the skin %g m: a bridged grain would leave the list with its "
+                     "bridge.  Give 'neighbor %s bin' or more (or a mesh wall)",
+                     wall_->id, largest_type, largest, neighbor->skin,
+                     format_at_least(needed).c_str());
+            error->all(FLERR, text);
+        }
+    }
+
+    /* The bridge of grain d.i and the wall in one call: its transition (in real force passes,
+     * d.computeflag) and its force on the grain; volume is bridgeVolume of the two types. */
+    double force(const cb_law *law, LIGGGHTS::ContactModels::SurfacesCloseData &d,
+                 const double gap, const double volume)
+    {
+        if (!d.contact_history) fail("no contact history for a wall contact (internal)");
+        double *const hist = &d.contact_history[history_offset_];
+        cb_bridge bridge;
+        std::memcpy(&bridge, hist, sizeof bridge);
+        const bool updating = d.computeflag != 0;
+        const double r = d.radi;
+        if (updating && update->setupflag) {
+            // every state checked once where it enters (a restart file's)
+            check(cb_bridge_check_state(&bridge), "bridge state at setup", d, gap, bridge.volume);
+            if (bridge.active != 0.0) {
+                check(cb_bridge_set_volume(law, r, CB_PLANE, bridge.volume, &bridge),
+                      "bridge constants at setup", d, gap, bridge.volume);
+                std::memcpy(hist, &bridge, sizeof bridge);
+            }
+        }
+        double capillary = 0.0;
+        bool have_force = false;
+        if (updating && cb_bridge_held(law, r, CB_PLANE, gap, &bridge, &capillary)) {
+            have_force = true;  // held in contact: its stored force
+        } else if (updating && (!cb_bridge_dry(&bridge) || gap <= 0.0)) {
+            cb_transition change = CB_BRIDGE_STAYS_DRY;
+            double released = 0.0;  // liquid fixed: a broken bridge's liquid leaves
+            check(cb_bridge_step(law, r, CB_PLANE, gap, volume, &bridge, &change, &released,
+                                 &capillary), "bridge update", d, gap, volume);
+            have_force = true;
+            std::memcpy(hist, &bridge, sizeof bridge);
+        }
+        if (updating && bridge.active != 0.0 &&
+            cb_bridge_beyond_reach(gap, design_rupture_[d.itype * (ntypes_ + 1) + d.jtype])) {
+            rupture_beyond_reach(d, gap, bridge.volume);
+            std::memset(&bridge, 0, sizeof bridge);
+            std::memcpy(hist, &bridge, sizeof bridge);
+        }
+        if (bridge.active == 0.0) return 0.0;
+        if (!have_force)
+            check(cb_bridge_force(law, r, CB_PLANE, gap, &bridge, &capillary), "force", d, gap,
+                  bridge.volume);
+        return capillary;
+    }
+
+  private:
+    /* A bridge held beyond the reach (a volume above bridgeVolume, from a restart file) is
+     * ruptured now, before its grain leaves the wall's list (cb_bridge_beyond_reach); warned
+     * once on the rank that saw it. */
+    void rupture_beyond_reach(const LIGGGHTS::ContactModels::SurfacesCloseData &d,
+                              const double gap, const double volume)
+    {
+        if (warned_beyond_) return;
+        warned_beyond_ = true;
+        char text[400];
+        snprintf(text, sizeof text, "cohesion model capillary: the bridge of particle %d and "
+                 "fix %s (%g m^3, above the bridgeVolume the reach is built for) was ruptured "
+                 "at gap %g m, beyond the reach, before its own rupture distance; this warning "
+                 "is given once per processor", atom->tag[d.i], wall_->id, volume, gap);
+        error->warning(FLERR, text);
+    }
+
+    void check(const cb_status status, const char *what,
+               const LIGGGHTS::ContactModels::SurfacesCloseData &d, const double gap,
+               const double volume)
+    {
+        if (status == CB_OK) return;
+        char text[400];
+        snprintf(text, sizeof text, "%s failed for particle %d (radius %g m) and fix %s (gap "
+                 "%g m, volume %g m^3): %s", what, atom->tag[d.i], d.radi, wall_->id, gap,
+                 volume, cb_status_message(status));
+        fail(text);
+    }
+
+    /* error->one writes to the screen only: into the log file too (as the pair's fail_one) */
+    void fail(const char *message)
+    {
+        const std::string text = std::string("cohesion model capillary: ") + message;
+        if (logfile) {
+            fprintf(logfile, "ERROR on proc %d: %s\n", comm->me, text.c_str());
+            fflush(logfile);
+        }
+        if (screen) fflush(screen);
+        error->one(FLERR, text.c_str());
+    }
+
+    LAMMPS_NS::FixWallGran *wall_;
+    int history_offset_;
+    int ntypes_;
+    std::vector<double> design_rupture_;  // per pair of types, [grain * (ntypes + 1) + wall]
+    bool warned_beyond_;
+};
+
+} /* namespace capbridge_liggghts */
+
+#endif /* CAPBRIDGE_LIGGGHTS_WALL_H_ */
