@@ -10,7 +10,9 @@ rupture distance the force on the sphere must be the attraction of `capbridge fo
 cosine of the sphere's and the wall's (20 and 40 degrees here: acos((cos 20 + cos 40) / 2));
 none once the gap passes `capbridge rupture LAW --plane`.  Each pull again in two processes,
 a restart file written at step 2000 with the bridge stretched: every step after it as the
-continuous run's, to 1e-12 (the bridge kept in the wall's history, per grain or per triangle).  Errors, asserted by message: a
+continuous run's, to 1e-12 (the bridge kept in the wall's history, per grain or per triangle).
+The table law at the primitive wall against the exact Laplace-Young sphere-plane bridge
+(`capbridge exact --plane`) to 2e-3.  Errors, asserted by message: a
 primitive wall whose neighbor skin is shorter than its bridges' rupture distance (its grain
 list is built with the skin alone), and a wall with a liquid protocol.
 
@@ -27,6 +29,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import liggghts_common as lc  # noqa: E402
 
 TOLERANCE = 1e-9
+EXACT_TOLERANCE = 2e-3  # the table law against the exact bridge, as tests/lammps/test_wall.sh
 RUN = {"law": "willett", "volume": 1e-11, "r": 1e-3, "vz": 0.05, "dt": 1e-6, "nsteps": 8000,
        "skin": 3e-4, "theta1": 20.0, "theta2": 40.0, "liquid": "liquid fixed", "resume": 0,
        "save": 0}
@@ -35,8 +38,8 @@ THETA = math.degrees(math.acos(0.5 * (math.cos(math.radians(RUN["theta1"])) +
                                       math.cos(math.radians(RUN["theta2"])))))
 
 
-def cli(capbridge, command, *extra):
-    words = [capbridge, command, RUN["law"], "theta", repr(THETA), "--r1", repr(RUN["r"]),
+def cli(capbridge, command, *extra, law=RUN["law"]):
+    words = [capbridge, command, law, "theta", repr(THETA), "--r1", repr(RUN["r"]),
              "--plane", "--volume", repr(RUN["volume"])] + list(extra)
     result = subprocess.run(words, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             universal_newlines=True)
@@ -99,6 +102,42 @@ def pull(capbridge, env, workdir, mesh, rupture):
     return ok and restarted(env, workdir, mesh, name, rows)
 
 
+def exact_force(capbridge, gap):
+    """The exact Laplace-Young sphere-plane bridge at the mean-cosine angle."""
+    words = [capbridge, "exact", "--r1", repr(RUN["r"]), "--plane", "--volume",
+             repr(RUN["volume"]), "--theta", repr(THETA), "--gap", repr(gap)]
+    result = subprocess.run(words, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            universal_newlines=True)
+    lines = result.stdout.split()
+    if result.returncode != 0 or len(lines) != 2:
+        lc.fail("%s failed: %s" % (" ".join(words), result.stderr))
+    return float(lines[1].split(",")[1])
+
+
+def table_against_exact(capbridge, env, workdir):
+    """The table law at a primitive wall against the exact sphere-plane bridge (the table
+    interpolates it: within EXACT_TOLERANCE), every 100th step in contact with it."""
+    rupture = cli(capbridge, "rupture", law="table")[0]
+    code, log = lc.liggghts(env, os.path.join(lc.HERE, "in.wall"),
+                            deck_variables(workdir, 0, law="table"), workdir, log="log.table")
+    if code != 0:
+        lc.fail("in.wall (table): %s" % (lc.error_line(log) or log[-1500:]))
+    worst, checked, beyond = 0.0, 0, 0
+    for step, z, fz in [[float(v) for v in row] for row in lc.thermo_rows(log)]:
+        gap = z - RUN["r"]
+        if gap > rupture:
+            beyond += fz != 0.0
+        elif gap > 0.0 and int(step) % 100 == 0:
+            exact = exact_force(capbridge, gap)
+            worst = max(worst, abs(-fz - exact) / exact)
+            checked += 1
+    ok = checked >= 40 and worst <= EXACT_TOLERANCE and beyond == 0
+    print("table law at a primitive wall: %d gaps, largest error against the exact bridge %.3g "
+          "(tolerance %g), no force beyond its rupture distance %.6g m %s"
+          % (checked, worst, EXACT_TOLERANCE, rupture, "ok" if ok else "FAIL"))
+    return ok
+
+
 def restarted(env, workdir, mesh, name, continuous):
     """The pull written to a restart file at SAVE_STEP and read by a second process: every
     step after it as the continuous run's (the bridge kept in the wall's history)."""
@@ -147,6 +186,7 @@ def main():
     rupture = cli(capbridge, "rupture")[0]
     ok = pull(capbridge, env, workdir, 0, rupture)
     ok = pull(capbridge, env, workdir, 1, rupture) and ok
+    ok = table_against_exact(capbridge, env, workdir) and ok
     ok = refused(env, workdir, "primitive wall with a short skin",
                  "beyond the skin 0.0001 m: a bridged grain would leave the list", skin=1e-4) and ok
     ok = refused(env, workdir, "wall with liquid protocol2",
