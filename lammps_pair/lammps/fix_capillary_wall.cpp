@@ -2,12 +2,13 @@
    capbridge — LAMMPS binding: fix capillary/wall (see fix_capillary_wall.h)
 
    fix ID group capillary/wall xplane|yplane|zplane LO HI [angle DEG] [volume V]
+   fix ID group capillary/wall zcylinder RADIUS [angle DEG] [volume V]
 
    Every physical rule is the core's: the sphere-plane bridge (r2 = CB_PLANE: the laws'
    plane forms, the rupture distance), the wall's contact angle (cb_wall_contact_angle),
    the bridge states (cb_bridge_step), Protocol 2's take with the wall's share 0
    (cb_protocol2_take), the viscous damping (cb_viscous_damping).  This file gathers the
-   grain and the plane, and scatters the force.
+   grain and the plane (a cylinder's tangent plane at the grain), and scatters the force.
 ------------------------------------------------------------------------- */
 
 #include "fix_capillary_wall.h"
@@ -43,8 +44,7 @@ FixCapillaryWall::FixCapillaryWall(LAMMPS *lmp, int narg, char **arg) :
     liquid_groupbit(0),
     census_step(-1), timestep_warned(0)
 {
-  parse_walls(narg, arg);
-  for (int k = 6; k < narg; k += 2) {
+  for (int k = parse_walls(narg, arg); k < narg; k += 2) {
     if (k + 1 >= narg)
       error->all(FLERR, "fix capillary/wall: keyword '{}' needs a value", arg[k]);
     if (strcmp(arg[k], "angle") == 0) {
@@ -80,21 +80,34 @@ FixCapillaryWall::FixCapillaryWall(LAMMPS *lmp, int narg, char **arg) :
 }
 
 /* ----------------------------------------------------------------------
-   the wall style and its two positions (arguments 3, 4, 5)
+   the wall style and its positions (arguments 3, 4, 5) or its radius (3, 4); returns the
+   index of the first keyword
 ------------------------------------------------------------------------- */
 
-void FixCapillaryWall::parse_walls(int narg, char **arg)
+int FixCapillaryWall::parse_walls(int narg, char **arg)
 {
-  if (narg < 6)
-    error->all(FLERR, "fix capillary/wall: expected 'xplane|yplane|zplane LO HI' (LO or HI may "
-               "be NULL)");
+  const char *expected = "fix capillary/wall: expected 'xplane|yplane|zplane LO HI' (LO or HI "
+                         "may be NULL) or 'zcylinder RADIUS'";
+  if (narg < 5) error->all(FLERR, expected);
+  if (strcmp(arg[3], "zcylinder") == 0) {
+    // the cylinder x^2 + y^2 = RADIUS^2 of fix wall/gran zcylinder, the grains inside
+    axis[0] = CYLINDER;
+    side[0] = 1.0;
+    position[0] = utils::numeric(FLERR, arg[4], false, lmp);
+    if (!(position[0] > 0.0) || !std::isfinite(position[0]))
+      error->all(FLERR, "fix capillary/wall: zcylinder radius {} must be > 0 and finite",
+                 arg[4]);
+    nwalls = 1;
+    return 5;
+  }
+  if (narg < 6) error->all(FLERR, expected);
   int normal = -1;
   if (strcmp(arg[3], "xplane") == 0) normal = 0;
   if (strcmp(arg[3], "yplane") == 0) normal = 1;
   if (strcmp(arg[3], "zplane") == 0) normal = 2;
   if (normal < 0)
     error->all(FLERR, "fix capillary/wall: unknown wall style '{}': allowed xplane, yplane, "
-               "zplane", arg[3]);
+               "zplane, zcylinder", arg[3]);
   for (int k = 0; k < 2; k++) {
     if (strcmp(arg[4 + k], "NULL") == 0) continue;
     axis[nwalls] = normal;
@@ -106,6 +119,7 @@ void FixCapillaryWall::parse_walls(int narg, char **arg)
     error->all(FLERR, "fix capillary/wall: both LO and HI are NULL: give at least one plane");
   if (nwalls == 2 && !(position[0] < position[1]))
     error->all(FLERR, "fix capillary/wall: LO {} must be below HI {}", position[0], position[1]);
+  return 6;
 }
 
 FixCapillaryWall::~FixCapillaryWall()
@@ -297,14 +311,28 @@ void FixCapillaryWall::check_states()
 }
 
 /* ----------------------------------------------------------------------
-   the gap of a grain to one wall, and its contact point's height above the centre
+   the gap of a grain to one wall, the wall's normal n at the grain (from the wall towards
+   the grain's centre) and the contact point's height above the centre (-r n_z)
 ------------------------------------------------------------------------- */
 
-double FixCapillaryWall::wall_gap(int i, int w, double &offset) const
+double FixCapillaryWall::wall_gap(int i, int w, double *n, double &offset) const
 {
   const double radius = atom->radius[i];
-  offset = axis[w] == 2 ? -side[w] * radius : 0.0;
-  return side[w] * (atom->x[i][axis[w]] - position[w]) - radius;
+  const double *x = atom->x[i];
+  double gap;
+  if (axis[w] == CYLINDER) {
+    // the cylinder's tangent plane at the grain: n points to the axis (along x if on it)
+    const double rho = sqrt(x[0] * x[0] + x[1] * x[1]);
+    n[0] = rho > 0.0 ? -x[0] / rho : 1.0;
+    n[1] = rho > 0.0 ? -x[1] / rho : 0.0;
+    n[2] = 0.0;
+    gap = position[w] - rho - radius;
+  } else {
+    for (int k = 0; k < 3; k++) n[k] = k == axis[w] ? side[w] : 0.0;
+    gap = side[w] * (x[axis[w]] - position[w]) - radius;
+  }
+  offset = -radius * n[2];
+  return gap;
 }
 
 const std::vector<FixCapillaryWall::Contact> &FixCapillaryWall::contacts()
@@ -316,8 +344,8 @@ const std::vector<FixCapillaryWall::Contact> &FixCapillaryWall::contacts()
     if (!(mask[i] & groupbit) || !laws[atom_type(i)]) continue;
     const int wet = !liquid_groupbit || (mask[i] & liquid_groupbit);
     for (int w = 0; w < nwalls; w++) {
-      double offset;
-      const double gap = wall_gap(i, w, offset);
+      double n[3], offset;
+      const double gap = wall_gap(i, w, n, offset);
       if (gap > 0.0 && cb_bridge_dry(bridge_at(i, w))) continue;
       out.push_back({i, w, gap, offset, wet});
     }
@@ -342,8 +370,8 @@ void FixCapillaryWall::candidates(std::vector<Contact> &out, double volume) cons
     if (status != CB_OK) fail(status, "Protocol 1 reach", i, NAN, volume);
     const int wet = !liquid_groupbit || (mask[i] & liquid_groupbit);
     for (int w = 0; w < nwalls; w++) {
-      double offset;
-      const double gap = wall_gap(i, w, offset);
+      double n[3], offset;
+      const double gap = wall_gap(i, w, n, offset);
       if (gap <= reach) out.push_back({i, w, gap, offset, wet});
     }
   }
@@ -362,24 +390,19 @@ void FixCapillaryWall::post_force(int /*vflag*/)
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit) || !laws[atom_type(i)]) continue;
     for (int w = 0; w < nwalls; w++) {
-      double offset;
-      const double gap = wall_gap(i, w, offset);
+      double n[3], offset;
+      const double gap = wall_gap(i, w, n, offset);
       cb_bridge *bridge = bridge_at(i, w);
       if (gap > 0.0 && cb_bridge_dry(bridge)) continue;
       double normal = -bridge_force(i, w, gap, bridge);    // along n, from the wall
       double ft[3] = {0.0, 0.0, 0.0};
       if (laws[atom_type(i)]->viscosity > 0.0 && bridge->active != 0.0 && gap > 0.0)
-        normal += viscous_normal(i, w, gap, bridge, ft);
-      const int a = axis[w];
-      f[i][a] += side[w] * normal;
-      wall_force[a] -= side[w] * normal;
+        normal += viscous_normal(i, gap, n, bridge, ft);
       for (int k = 0; k < 3; k++) {
-        f[i][k] += ft[k];
-        wall_force[k] -= ft[k];
+        f[i][k] += normal * n[k] + ft[k];
+        wall_force[k] -= normal * n[k] + ft[k];
       }
       // torque of ft at the contact point -r n: -r n x ft
-      const double n[3] = {a == 0 ? side[w] : 0.0, a == 1 ? side[w] : 0.0,
-                           a == 2 ? side[w] : 0.0};
       const double r = radius[i];
       torque[i][0] -= r * (n[1] * ft[2] - n[2] * ft[1]);
       torque[i][1] -= r * (n[2] * ft[0] - n[0] * ft[2]);
@@ -439,13 +462,11 @@ double FixCapillaryWall::bridge_force(int i, int w, double gap, cb_bridge *bridg
    point's velocity v_t - r omega x n (the wall at rest)
 ------------------------------------------------------------------------- */
 
-double FixCapillaryWall::viscous_normal(int i, int w, double gap, const cb_bridge *bridge,
-                                        double *ft)
+double FixCapillaryWall::viscous_normal(int i, double gap, const double *n,
+                                        const cb_bridge *bridge, double *ft)
 {
   const double *v = atom->v[i], *omega = atom->omega[i];
   const double r = atom->radius[i];
-  const int a = axis[w];
-  const double n[3] = {a == 0 ? side[w] : 0.0, a == 1 ? side[w] : 0.0, a == 2 ? side[w] : 0.0};
   double normal = 0.0, tangential = 0.0;
   const int status = cb_viscous_damping(law_of(i), r, CB_PLANE, gap, bridge->volume, &normal,
                                         &tangential);

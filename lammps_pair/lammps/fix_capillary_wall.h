@@ -1,9 +1,11 @@
 /* -*- c++ -*- ----------------------------------------------------------
    capbridge — LAMMPS binding: fix capillary/wall
 
-   Liquid bridges between the grains of pair style gran/capillary and flat walls:
+   Liquid bridges between the grains of pair style gran/capillary and flat walls or the
+   inside of a z cylinder about the z axis:
      fix ID group capillary/wall xplane|yplane|zplane LO HI [angle DEG] [volume V]
-   (LO or HI may be NULL).  The wall's contact is not ours: a stock fix wall/gran on the same
+     fix ID group capillary/wall zcylinder RADIUS [angle DEG] [volume V]
+   (LO or HI may be NULL; a cylinder is its tangent plane at each grain).  The wall's contact is not ours: a stock fix wall/gran on the same
    planes gives it, and the forces add (its Coulomb limit reads its own contact force, which
    is eq. 12 of Richefeu 2007 as his eq. 1 defines f_n).  This fix adds the bridge's
    capillary force (the core's sphere-plane pair, r2 = CB_PLANE) and, with a viscous law, its
@@ -64,7 +66,7 @@ class FixCapillaryWall : public Fix {
   // bridge (or a mark) or touch
   struct Contact {
     int atom, wall;
-    double gap;       // distance of the centre from the plane minus the radius
+    double gap;       // distance of the centre from the wall minus the radius
     double offset;    // height of the contact point above the grain's centre (Protocol 3)
     int wet;          // the grain may form a bridge (the liquid fix's group)
   };
@@ -83,11 +85,11 @@ class FixCapillaryWall : public Fix {
   void census(double &count, double &liquid) const;
 
  protected:
-  enum { MAX_WALLS = 2 };
+  enum { MAX_WALLS = 2, CYLINDER = 3 };
   int nwalls;
-  int axis[MAX_WALLS];         // 0, 1, 2: the plane's normal
+  int axis[MAX_WALLS];         // 0, 1, 2: the plane's normal; CYLINDER: the z cylinder
   double side[MAX_WALLS];      // +1: the grains are above the plane (LO), -1: below (HI)
-  double position[MAX_WALLS];
+  double position[MAX_WALLS];  // the plane's coordinate, or the cylinder's radius
   double wall_angle;           // keyword angle [rad]; < 0: the grains' own contact angle
   double volume_given;         // keyword volume; < 0: the type pair's
   int key_base;                // wall_key's offset: the walls of the capillary/wall fixes before
@@ -109,14 +111,15 @@ class FixCapillaryWall : public Fix {
   int timestep_warned;
 
   int atom_type(int atom) const;
-  void parse_walls(int narg, char **arg);
+  int parse_walls(int narg, char **arg);
   void derive_laws();
   void release_laws();
   void check_states();
   void check_timestep();
-  double wall_gap(int atom, int wall, double &offset) const;
+  double wall_gap(int atom, int wall, double *normal, double &offset) const;
   double bridge_force(int atom, int wall, double gap, cb_bridge *bridge);
-  double viscous_normal(int atom, int wall, double gap, const cb_bridge *bridge, double *ft);
+  double viscous_normal(int atom, double gap, const double *normal, const cb_bridge *bridge,
+                        double *ft);
   [[noreturn]] void fail(int status, const char *what, int atom, double gap, double volume) const;
 };
 

@@ -9,6 +9,7 @@
 # the core's rupture distance.  The table law's force follows the exact Laplace-Young
 # sphere-plane bridge (`capbridge exact --plane`) to 2e-3.  Keyword angle: the law at the
 # mean-cosine angle of grain and wall (cb_wall_contact_angle).
+# zcylinder: the same bridge with the cylinder's tangent plane at the grain, off the axes.
 # Under Protocols 2 and 3 the sphere's free liquid forms the bridge and returns to it at
 # rupture; 192 grains settling on a wet floor (in.wall_liquid, fix wall/gran's contact)
 # under Protocols 1 (the floor's pairs among the candidates), 2 and 3 conserve the liquid
@@ -16,12 +17,13 @@
 # their liquid come back).
 . "$(dirname "$0")/lib.sh" "$@"
 
-R=5e-4 V=2e-11 VX=0.02 VZ=1 DT=2e-6 N=200
+R=5e-4 V=2e-11 VX=0.02 VZ=1 DT=2e-6 N=200 RC=5e-3
 
 run() {  # run LOG NP SIDE LAW "KEYS" ["ANGLE_KEYS" [PROTOCOL]]
     lmp "$2" "$1" -in "$DECKS/in.wall" -var r $R -var volume $V -var law "$4" -var keys "$5" \
         -var angle_keys "${6:-}" -var protocol "${7:-none}" -var side "$3" -var vx $VX \
-        -var vz $VZ -var dt $DT -var nsteps $N >/dev/null 2>&1 ||
+        -var vz $VZ -var dt $DT -var nsteps $N -var wall "${WALL:-zplane}" -var rc $RC \
+        >/dev/null 2>&1 ||
         { fail "$(basename "$1"): LAMMPS failed: $(grep -h -m1 ERROR "$1" "$1.screen")"; return 1; }
 }
 
@@ -103,6 +105,46 @@ for protocol in protocol2 protocol3; do
     ! grep -q "WARNING: fix capillary/wall: time step" "$log" ||
         fail "$protocol: a wall time-step warning without viscosity: $(grep -h -m1 WARNING "$log")"
 done
+
+# zcylinder: the inside of a cylinder of radius RC about z, the sphere at 45 degrees
+# between x and y driven to the axis: the bridge of the cylinder's tangent plane, its force
+# along the wall's normal at the grain (half of it squared on x and on y), the opposite
+# force on the wall, broken at the core's rupture distance
+log="$TMP/wall-cylinder.log"
+if WALL=zcylinder run "$log" 1 1 willett "gamma 0.0728"; then
+    checks=$((checks + 1))
+    thermo "$log" | while read -r step rho fx fy ty wy bridges volume wfx wfz free; do
+        gap=$(awk -v rho="$rho" -v rc=$RC -v r=$R 'BEGIN { printf "%.17g", rc - rho - r }')
+        echo "$step $fx $fy $bridges $wfx $("$CB" force willett gamma 0.0728 --r1 $R --plane --volume $V --gap "$gap" | tail -1)"
+    done >"$TMP/rows"
+    awk '
+    function abs(x) { return x < 0 ? -x : x }
+    function same(name, got, want, scale) {
+        if (abs(got - want) <= 1e-9 * scale) return
+        if (bad < 5) printf "zcylinder step %d: %s LAMMPS %.17g, core %.17g\n", $1, name, got, want
+        bad++
+    }
+    {
+        split($6, c, ",")
+        if ($4 == 1) {
+            component = c[2] / sqrt(2)   # the attraction, towards the wall: +x and +y
+            same("fx", $2, component, c[2]); same("fy", $3, component, c[2])
+            same("wall fx", $5, -component, c[2])
+            if (c[1] > c[4]) { printf "zcylinder step %d: a bridge beyond the rupture distance\n", $1; bad++ }
+            held++; last = c[1]
+        } else {
+            if (held == 0) { printf "zcylinder step %d: no bridge at the start\n", $1; bad++ }
+            if (!broken && c[1] < c[4]) { printf "zcylinder step %d: broken at gap %.6g before the rupture distance %.6g\n", $1, c[1], c[4]; bad++ }
+            if ($2 != 0 || $3 != 0) { printf "zcylinder step %d: a force without a bridge\n", $1; bad++ }
+            broken++; rupture = c[4]
+        }
+    }
+    END {
+        if (held < 50 || broken < 10) { printf "zcylinder: %d steps with a bridge, %d after it broke\n", held, broken; bad++ }
+        printf "willett, zcylinder: %d steps with a bridge, force on x and y as the core'"'"'s to 1e-9, broken after gap %.6g m (rupture distance %.6g)\n", held, last, rupture
+        exit bad > 0 }' "$TMP/rows" >"$TMP/why" || fail "$(head -5 "$TMP/why")"
+    cat "$TMP/why"
+fi
 
 # keyword angle: grain 20 degrees, wall 50: the law at acos((cos 20 + cos 50) / 2)
 mean=$(awk 'BEGIN { d = atan2(0, -1) / 180; c = (cos(20 * d) + cos(50 * d)) / 2
