@@ -11,7 +11,8 @@ cosine of the sphere's and the wall's (20 and 40 degrees here: acos((cos 20 + co
 none once the gap passes `capbridge rupture LAW --plane`.  Each pull again in two processes,
 a restart file written at step 2000 with the bridge stretched: every step after it as the
 continuous run's, to 1e-12 (the bridge kept in the wall's history, per grain or per triangle).
-The table law at the primitive wall against the exact Laplace-Young sphere-plane bridge
+Both pulls again on 2 ranks: the sphere starts on the boundary of the two ranks' domains (x = 0)
+and each mesh triangle is owned by one of them.  The table law at the primitive wall against the exact Laplace-Young sphere-plane bridge
 (`capbridge exact --plane`) to 2e-3.  Errors, asserted by message: a
 primitive wall whose neighbor skin is shorter than its bridges' rupture distance (its grain
 list is built with the skin alone), and a wall with a liquid protocol.
@@ -69,11 +70,12 @@ def deck_variables(workdir, mesh, **changes):
         [(k, v if isinstance(v, str) else repr(v)) for k, v in run.items()]
 
 
-def pull(capbridge, env, workdir, mesh, rupture):
-    name = "mesh" if mesh else "primitive"
+def pull(capbridge, env, workdir, mesh, rupture, ranks=1):
+    name = ("mesh" if mesh else "primitive") + " wall" + ("" if ranks == 1 else ", %d ranks" % ranks)
+    tag = name.replace(", ", "-").replace(" ", "")
     code, log = lc.liggghts(env, os.path.join(lc.HERE, "in.wall"),
-                            deck_variables(workdir, mesh), workdir, log="log." + name,
-                            screen="screen." + name)
+                            deck_variables(workdir, mesh), workdir, ranks=ranks,
+                            log="log." + tag, screen="screen." + tag)
     if code != 0:
         lc.fail("in.wall (%s): %s" % (name, lc.error_line(log) or log[-1500:]))
     rows = [[float(v) for v in row] for row in lc.thermo_rows(log)]
@@ -96,10 +98,10 @@ def pull(capbridge, env, workdir, mesh, rupture):
         checked += 1
     ok = checked >= 300 and after >= 50 and worst <= TOLERANCE and \
         rupture - last_gap < RUN["vz"] * RUN["dt"] * 1.01
-    print("%s wall: %d steps checked, force within %.1e of the core's (tolerance %g); held to "
+    print("%s: %d steps checked, force within %.1e of the core's (tolerance %g); held to "
           "gap %.6g m, none beyond the rupture distance %.6g m (%d steps) %s"
           % (name, checked, worst, TOLERANCE, last_gap, rupture, after, "ok" if ok else "FAIL"))
-    return ok and restarted(env, workdir, mesh, name, rows)
+    return ok and (ranks > 1 or restarted(env, workdir, mesh, name, rows))
 
 
 def exact_force(capbridge, gap):
@@ -146,7 +148,8 @@ def restarted(env, workdir, mesh, name, continuous):
                           ("second", dict(nsteps=RUN["nsteps"] - SAVE_STEP, resume=1))):
         code, log = lc.liggghts(env, os.path.join(lc.HERE, "in.wall"),
                                 deck_variables(workdir, mesh, **changes), workdir,
-                                log="log.%s.%s" % (name, part), screen="screen." + name)
+                                log="log.%s.%s" % (name.replace(" ", "-"), part),
+                                screen="screen." + name.replace(" ", "-"))
         if code != 0:
             lc.fail("in.wall (%s, %s part): %s" % (name, part, lc.error_line(log) or log[-1500:]))
         runs.append(log)
@@ -157,7 +160,7 @@ def restarted(env, workdir, mesh, name, continuous):
                   for a, b in zip(expected[s], after[s]))]
     bridged = expected[SAVE_STEP][1] != 0.0
     ok = bridged and sorted(after) == sorted(expected) and not differ
-    print("%s wall, restarted at step %d (force %.6g N): %d steps as the continuous run's%s %s"
+    print("%s, restarted at step %d (force %.6g N): %d steps as the continuous run's%s %s"
           % (name, SAVE_STEP, expected[SAVE_STEP][1], len(expected) - len(differ),
              "" if not differ else ", first difference at step %d" % min(differ),
              "ok" if ok else "FAIL"))
@@ -186,6 +189,8 @@ def main():
     rupture = cli(capbridge, "rupture")[0]
     ok = pull(capbridge, env, workdir, 0, rupture)
     ok = pull(capbridge, env, workdir, 1, rupture) and ok
+    ok = pull(capbridge, env, workdir, 0, rupture, ranks=2) and ok
+    ok = pull(capbridge, env, workdir, 1, rupture, ranks=2) and ok
     ok = table_against_exact(capbridge, env, workdir) and ok
     ok = refused(env, workdir, "primitive wall with a short skin",
                  "beyond the skin 0.0001 m: a bridged grain would leave the list", skin=1e-4) and ok
