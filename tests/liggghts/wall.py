@@ -170,7 +170,7 @@ def restarted(env, workdir, mesh, name, continuous):
 def refused(env, workdir, name, expected, **changes):
     code, log = lc.liggghts(env, os.path.join(lc.HERE, "in.wall"),
                             deck_variables(workdir, 0, nsteps=10, **changes), workdir,
-                            log="log." + name)
+                            log="log." + name.replace(" ", "-"))
     ok = code != 0 and expected in log
     print("%s: %s %s" % (name, "refused" if ok else "NOT refused as expected",
                          "ok" if ok else "FAIL: " + (lc.error_line(log) or log[-800:])))
