@@ -15,7 +15,8 @@
 #   in.lammps's dashpot repulsive, in.liggghts's limitForce on); -dashpot approach|both:
 #   LAMMPS's contact with Richefeu's dashpot (approach only) or one that may pull, run names
 #   get -approach or -both; LIGGGHTS keeps Gladkyy's.
-#   The full matrix at default size is 2 engines x 17 runs x ~2 min on 2 idle cores: about 1 h 10 min.
+#   The full matrix at default size (the paper's period 100 s since 2026-12-07) is 2 engines x 17
+#   runs x ~2 min (LAMMPS; LIGGGHTS see docs/results/split_bottom/default-rate/) on 2 idle cores.
 # With CAPBRIDGE_LOCK=FILE every run holds `flock FILE` (one heavy run at a time on a machine
 # shared by several jobs).
 # Runs go to out/split_bottom/study-SIZE/ENGINE-LAW-VOLUME/ (an existing run with a snapshot
