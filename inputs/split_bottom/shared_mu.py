@@ -17,6 +17,13 @@ standard errors are given:
     error of the mean over the seeds (sd / sqrt(n)).  This one holds the packing-to-packing
     scatter; it is the one to compare with the paper.
 Each wet row also gives c_V - c_dry (its error from the per-seed differences).
+
+The paper's sentence ("the correlations fit ... tau = mu p + c with mu = 0.13 for the
+particular granular material. Here, the parameter c ... depends significantly on the liquid
+content") reads two ways, so both fits are written: the joint one above, and the dry
+material's mu held for every volume (mu_dry: the slope of the dry runs alone; c at mu_dry:
+the mean of tau - mu_dry p over the band cells of a volume, which is its least-squares
+intercept at that slope), with errors across the seeds as above.
 """
 import csv
 import math
@@ -49,6 +56,21 @@ def joint_fit(runs):
     return coef[0], dict(zip(volumes, coef[1:])), cov, volumes
 
 
+def dry_mu_fit(runs):
+    """The dry runs' slope mu_dry (their own tau = mu p + c) and, at that slope, one intercept
+    per volume: the mean of tau - mu_dry p over its band cells.  None without dry runs."""
+    dry = [r for r in runs if r["volume"] == 0.0]
+    if not dry:
+        return None
+    mu_dry = np.polyfit(np.concatenate([r["p"] for r in dry]),
+                        np.concatenate([r["tau"] for r in dry]), 1)[0]
+    c = {}
+    for v in sorted({r["volume"] for r in runs}):
+        of_v = [r for r in runs if r["volume"] == v]
+        c[v] = float(np.mean(np.concatenate([r["tau"] - mu_dry * r["p"] for r in of_v])))
+    return float(mu_dry), c
+
+
 def mean_se(values):
     v = np.array(values, dtype=float)
     return float(v.mean()), (float(v.std(ddof=1) / math.sqrt(len(v))) if len(v) > 1
@@ -62,12 +84,14 @@ def shared_mu_rows(runs):
         mine = [r for r in runs if r["engine"] == engine]
         mu, c, cov, volumes = joint_fit(mine)
         seeds = sorted({r["seed"] for r in mine})
-        per_seed = []
+        per_seed, dry_per_seed = [], []
         for s in seeds:
             of_seed = [r for r in mine if r["seed"] == s]
             if {r["volume"] for r in of_seed} == set(volumes):
                 per_seed.append(joint_fit(of_seed)[:2])
+                dry_per_seed.append(dry_mu_fit(of_seed))
         mu_s = mean_se([f[0] for f in per_seed])
+        at_dry = dry_mu_fit(mine)
         dry = volumes[0] if volumes[0] == 0.0 else None
         for k, v in enumerate(volumes):
             c_s = mean_se([f[1][v] for f in per_seed])
@@ -81,10 +105,18 @@ def shared_mu_rows(runs):
             else:  # the wet intercept over the dry one, its error from the per-seed differences
                 shift = mean_se([f[1][v] - f[1][dry] for f in per_seed])
                 row += [f"{c[v] - c[dry]:.4f}", f"{shift[1]:.4f}"]
+            if at_dry is None:
+                row += ["", "", "", ""]
+            else:
+                mu_dry_s = mean_se([f[0] for f in dry_per_seed])
+                c_dry_s = mean_se([f[1][v] for f in dry_per_seed])
+                row += [f"{at_dry[0]:.4f}", f"{mu_dry_s[1]:.4f}", f"{at_dry[1][v]:.4f}",
+                        f"{c_dry_s[1]:.4f}"]
             rows.append(row)
     header = ["engine", "volume_nl", "runs", "band_cells", "seeds", "mu", "mu_se_residual",
               "mu_se_seeds", "c_Pa", "c_se_residual_Pa", "c_se_seeds_Pa", "c_minus_dry_Pa",
-              "c_minus_dry_se_seeds_Pa"]
+              "c_minus_dry_se_seeds_Pa", "mu_dry", "mu_dry_se_seeds", "c_at_mu_dry_Pa",
+              "c_at_mu_dry_se_seeds_Pa"]
     return header, rows
 
 
