@@ -3,12 +3,14 @@
 
    fix ID group capillary/wall xplane|yplane|zplane LO HI [angle DEG] [volume V]
    fix ID group capillary/wall zcylinder RADIUS [angle DEG] [volume V]
+   fix ID group capillary/wall region REGION-ID [angle DEG] [volume V]
 
    Every physical rule is the core's: the sphere-plane bridge (r2 = CB_PLANE: the laws'
    plane forms, the rupture distance), the wall's contact angle (cb_wall_contact_angle),
    the bridge states (cb_bridge_step), Protocol 2's take with the wall's share 0
    (cb_protocol2_take), the viscous damping (cb_viscous_damping).  This file gathers the
-   grain and the plane (a cylinder's tangent plane at the grain), and scatters the force.
+   grain and the plane (a cylinder's or a region's tangent plane at the grain), and scatters
+   the force.
 ------------------------------------------------------------------------- */
 
 #include "fix_capillary_wall.h"
@@ -19,12 +21,14 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "force.h"
 #include "math_const.h"
 #include "memory.h"
 #include "modify.h"
 #include "pair.h"
+#include "region.h"
 #include "update.h"
 #include "utils.h"
 
@@ -39,8 +43,8 @@ using MathConst::MY_PI;
 /* ---------------------------------------------------------------------- */
 
 FixCapillaryWall::FixCapillaryWall(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), nwalls(0), wall_angle(-1.0), volume_given(-1.0), key_base(0),
-    state(nullptr), bridges(nullptr), liquid(nullptr), per_atom_liquid(0), protocol1(0),
+    Fix(lmp, narg, arg), nwalls(0), wall_angle(-1.0), volume_given(-1.0), region_id(nullptr),
+    region(nullptr), key_base(0), state(nullptr), bridges(nullptr), liquid(nullptr), per_atom_liquid(0), protocol1(0),
     liquid_groupbit(0),
     census_step(-1), timestep_warned(0)
 {
@@ -87,8 +91,22 @@ FixCapillaryWall::FixCapillaryWall(LAMMPS *lmp, int narg, char **arg) :
 int FixCapillaryWall::parse_walls(int narg, char **arg)
 {
   const char *expected = "fix capillary/wall: expected 'xplane|yplane|zplane LO HI' (LO or HI "
-                         "may be NULL) or 'zcylinder RADIUS'";
+                         "may be NULL), 'zcylinder RADIUS' or 'region REGION-ID'";
   if (narg < 5) error->all(FLERR, expected);
+  if (strcmp(arg[3], "region") == 0) {
+    // the faces of a region, each grain's bridges keyed by the face (Region::Contact's
+    // iwall, below the region's cmax: one slot per face it can report)
+    region = domain->get_region_by_id(arg[4]);
+    if (!region)
+      error->all(FLERR, "fix capillary/wall: region {} does not exist: define it with the "
+                 "region command before this fix", arg[4]);
+    axis[0] = REGION;
+    region_id = utils::strdup(arg[4]);
+    nwalls = region->cmax;
+    if (nwalls < 1)
+      error->all(FLERR, "fix capillary/wall: region {} has no surface to wet", arg[4]);
+    return 5;
+  }
   if (strcmp(arg[3], "zcylinder") == 0) {
     // the cylinder x^2 + y^2 = RADIUS^2 of fix wall/gran zcylinder, the grains inside
     axis[0] = CYLINDER;
@@ -107,7 +125,7 @@ int FixCapillaryWall::parse_walls(int narg, char **arg)
   if (strcmp(arg[3], "zplane") == 0) normal = 2;
   if (normal < 0)
     error->all(FLERR, "fix capillary/wall: unknown wall style '{}': allowed xplane, yplane, "
-               "zplane, zcylinder", arg[3]);
+               "zplane, zcylinder, region", arg[3]);
   for (int k = 0; k < 2; k++) {
     if (strcmp(arg[4 + k], "NULL") == 0) continue;
     axis[nwalls] = normal;
@@ -128,6 +146,7 @@ FixCapillaryWall::~FixCapillaryWall()
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
   memory->destroy(state);
+  delete[] region_id;
   release_laws();
 }
 
@@ -151,6 +170,17 @@ void FixCapillaryWall::init()
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "fix capillary/wall does not support run_style respa: use run_style "
                "verlet");
+  if (region_id) {
+    // the region may have been deleted or defined again since the last run
+    region = domain->get_region_by_id(region_id);
+    if (!region)
+      error->all(FLERR, "fix capillary/wall: region {} does not exist (any more)", region_id);
+    if (region->cmax != nwalls)
+      error->all(FLERR, "fix capillary/wall: region {} now has {} faces, {} when this fix was "
+                 "defined: define the fix again", region_id, region->cmax, nwalls);
+    // a moving region's velocity from this run's first step on
+    if (region->dynamic_check()) region->reset_vel();
+  }
   auto found = modify->get_fix_by_style("^capillary/liquid$");
   liquid = found.empty() ? nullptr : dynamic_cast<FixCapillaryLiquid *>(found.front());
   per_atom_liquid = liquid && capillary_liquid_per_atom(liquid->mode);
@@ -311,28 +341,86 @@ void FixCapillaryWall::check_states()
 }
 
 /* ----------------------------------------------------------------------
-   the gap of a grain to one wall, the wall's normal n at the grain (from the wall towards
-   the grain's centre) and the contact point's height above the centre (-r n_z)
+   a moving or changing region at this step (once per step: Region::set_velocity keeps
+   the step it was called at, as fix wall/gran/region on the same region may call it too)
 ------------------------------------------------------------------------- */
 
-double FixCapillaryWall::wall_gap(int i, int w, double *n, double &offset) const
+void FixCapillaryWall::prepare_walls()
 {
+  if (!region || !region->dynamic_check()) return;
+  region->prematch();
+  region->set_velocity();
+}
+
+/* ----------------------------------------------------------------------
+   the walls of grain i this step: each with its gap, its normal n at the grain (from the
+   wall towards the centre) and its velocity there.  Planes and the cylinder: every wall.
+   A region: the faces within `reach` of the grain's surface (Region::surface), and, with
+   with_beyond, each other face that holds a bridge or a mark, beyond (its gap taken as
+   reach: farther than the bridge's rupture distance, since grain_reach covers it)
+------------------------------------------------------------------------- */
+
+const std::vector<FixCapillaryWall::Face> &FixCapillaryWall::faces(int i, double reach,
+                                                                   int with_beyond)
+{
+  std::vector<Face> &out = grain_faces;
+  out.clear();
   const double radius = atom->radius[i];
-  const double *x = atom->x[i];
-  double gap;
-  if (axis[w] == CYLINDER) {
-    // the cylinder's tangent plane at the grain: n points to the axis (along x if on it)
-    const double rho = sqrt(x[0] * x[0] + x[1] * x[1]);
-    n[0] = rho > 0.0 ? -x[0] / rho : 1.0;
-    n[1] = rho > 0.0 ? -x[1] / rho : 0.0;
-    n[2] = 0.0;
-    gap = position[w] - rho - radius;
-  } else {
-    for (int k = 0; k < 3; k++) n[k] = k == axis[w] ? side[w] : 0.0;
-    gap = side[w] * (x[axis[w]] - position[w]) - radius;
+  double *x = atom->x[i];
+  if (axis[0] != REGION) {
+    for (int w = 0; w < nwalls; w++) {
+      Face face = {w, 0, 0.0, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
+      if (axis[w] == CYLINDER) {
+        // the cylinder's tangent plane at the grain: n points to the axis (along x if on it)
+        const double rho = sqrt(x[0] * x[0] + x[1] * x[1]);
+        face.n[0] = rho > 0.0 ? -x[0] / rho : 1.0;
+        face.n[1] = rho > 0.0 ? -x[1] / rho : 0.0;
+        face.gap = position[w] - rho - radius;
+      } else {
+        face.n[axis[w]] = side[w];
+        face.gap = side[w] * (x[axis[w]] - position[w]) - radius;
+      }
+      out.push_back(face);
+    }
+    return out;
   }
-  offset = -radius * n[2];
-  return gap;
+  // a grain whose centre left the region (through a wall) reaches none of its faces
+  const int nc = region->match(x[0], x[1], x[2]) ? region->surface(x[0], x[1], x[2],
+                                                                   radius + reach) : 0;
+  const int moving = region->dynamic_check();
+  for (int c = 0; c < nc; c++) {
+    const Region::Contact &contact = region->contact[c];
+    if (!(contact.r > 0.0))
+      error->one(FLERR, "fix capillary/wall: atom {} has its centre on a face of region {}: "
+                 "no normal there (a grain through the wall)", atom->tag[i], region_id);
+    Face face = {contact.iwall, 0, contact.r - radius,
+                 {contact.delx / contact.r, contact.dely / contact.r, contact.delz / contact.r},
+                 {0.0, 0.0, 0.0}};
+    if (moving) region->velocity_contact(face.v, x, c);
+    out.push_back(face);
+  }
+  if (!with_beyond) return out;
+  for (int w = 0; w < nwalls; w++) {
+    if (cb_bridge_dry(bridge_at(i, w))) continue;
+    bool found = false;
+    for (int c = 0; c < nc; c++) found = found || out[c].wall == w;
+    if (!found) out.push_back({w, 1, reach, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}});
+  }
+  return out;
+}
+
+/* ----------------------------------------------------------------------
+   how far from grain i a region's faces are looked for: beyond its bridges' rupture
+   distances (a face out of it breaks its bridge) and a margin of the grain's radius for
+   the contacts that form bridges (planes and the cylinder: every wall is visited)
+------------------------------------------------------------------------- */
+
+double FixCapillaryWall::grain_reach(int i) const
+{
+  double reach = CB_REACH_MARGIN * atom->radius[i];
+  for (int w = 0; w < nwalls; w++)
+    reach = MAX(reach, (1.0 + CB_REACH_MARGIN) * bridge_at(i, w)->rupture);
+  return reach;
 }
 
 const std::vector<FixCapillaryWall::Contact> &FixCapillaryWall::contacts()
@@ -340,14 +428,14 @@ const std::vector<FixCapillaryWall::Contact> &FixCapillaryWall::contacts()
   std::vector<Contact> &out = step_contacts;
   out.clear();
   const int *mask = atom->mask;
+  prepare_walls();
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit) || !laws[atom_type(i)]) continue;
     const int wet = !liquid_groupbit || (mask[i] & liquid_groupbit);
-    for (int w = 0; w < nwalls; w++) {
-      double n[3], offset;
-      const double gap = wall_gap(i, w, n, offset);
-      if (gap > 0.0 && cb_bridge_dry(bridge_at(i, w))) continue;
-      out.push_back({i, w, gap, offset, wet});
+    for (const Face &face : faces(i, grain_reach(i), 1)) {
+      if (face.gap > 0.0 && cb_bridge_dry(bridge_at(i, face.wall))) continue;
+      // the contact point's height above the centre, -r n_z (Protocol 3)
+      out.push_back({i, face.wall, face.gap, -atom->radius[i] * face.n[2], wet});
     }
   }
   return out;
@@ -358,10 +446,11 @@ const std::vector<FixCapillaryWall::Contact> &FixCapillaryWall::contacts()
    within the rupture distance of a bridge of this volume (the largest it can receive)
 ------------------------------------------------------------------------- */
 
-void FixCapillaryWall::candidates(std::vector<Contact> &out, double volume) const
+void FixCapillaryWall::candidates(std::vector<Contact> &out, double volume)
 {
   out.clear();
   const int *mask = atom->mask;
+  prepare_walls();
   for (int i = 0; i < atom->nlocal; i++) {
     const cb_law *law = laws[atom_type(i)];
     if (!(mask[i] & groupbit) || !law) continue;
@@ -369,11 +458,9 @@ void FixCapillaryWall::candidates(std::vector<Contact> &out, double volume) cons
     const int status = cb_rupture_distance(law, atom->radius[i], CB_PLANE, volume, &reach);
     if (status != CB_OK) fail(status, "Protocol 1 reach", i, NAN, volume);
     const int wet = !liquid_groupbit || (mask[i] & liquid_groupbit);
-    for (int w = 0; w < nwalls; w++) {
-      double n[3], offset;
-      const double gap = wall_gap(i, w, n, offset);
-      if (gap <= reach) out.push_back({i, w, gap, offset, wet});
-    }
+    for (const Face &face : faces(i, reach, 0))
+      if (face.gap <= reach)
+        out.push_back({i, face.wall, face.gap, -atom->radius[i] * face.n[2], wet});
   }
 }
 
@@ -387,17 +474,17 @@ void FixCapillaryWall::post_force(int /*vflag*/)
   const double *radius = atom->radius;
   const int *mask = atom->mask;
   for (double &w : wall_force) w = 0.0;
+  prepare_walls();
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit) || !laws[atom_type(i)]) continue;
-    for (int w = 0; w < nwalls; w++) {
-      double n[3], offset;
-      const double gap = wall_gap(i, w, n, offset);
-      cb_bridge *bridge = bridge_at(i, w);
+    for (const Face &face : faces(i, grain_reach(i), 1)) {
+      const double gap = face.gap, *n = face.n;
+      cb_bridge *bridge = bridge_at(i, face.wall);
       if (gap > 0.0 && cb_bridge_dry(bridge)) continue;
-      double normal = -bridge_force(i, w, gap, bridge);    // along n, from the wall
+      double normal = -bridge_force(i, face.wall, gap, bridge);    // along n, from the wall
       double ft[3] = {0.0, 0.0, 0.0};
       if (laws[atom_type(i)]->viscosity > 0.0 && bridge->active != 0.0 && gap > 0.0)
-        normal += viscous_normal(i, gap, n, bridge, ft);
+        normal += viscous_normal(i, face, bridge, ft);
       for (int k = 0; k < 3; k++) {
         f[i][k] += normal * n[k] + ft[k];
         wall_force[k] -= normal * n[k] + ft[k];
@@ -459,18 +546,20 @@ double FixCapillaryWall::bridge_force(int i, int w, double gap, cb_bridge *bridg
 /* ----------------------------------------------------------------------
    a stretched bridge's viscous force (the core's cb_viscous_damping, sphere-plane): the
    normal part returned (along n, from the wall), the tangential one in ft, at the contact
-   point's velocity v_t - r omega x n (the wall at rest)
+   point's velocity relative to the wall's there, v_t - r omega x n - v_wall,t
 ------------------------------------------------------------------------- */
 
-double FixCapillaryWall::viscous_normal(int i, double gap, const double *n,
-                                        const cb_bridge *bridge, double *ft)
+double FixCapillaryWall::viscous_normal(int i, const Face &face, const cb_bridge *bridge,
+                                        double *ft)
 {
-  const double *v = atom->v[i], *omega = atom->omega[i];
+  const double *omega = atom->omega[i], *n = face.n;
+  const double v[3] = {atom->v[i][0] - face.v[0], atom->v[i][1] - face.v[1],
+                       atom->v[i][2] - face.v[2]};
   const double r = atom->radius[i];
   double normal = 0.0, tangential = 0.0;
-  const int status = cb_viscous_damping(law_of(i), r, CB_PLANE, gap, bridge->volume, &normal,
-                                        &tangential);
-  if (status != CB_OK) fail(status, "viscous damping", i, gap, bridge->volume);
+  const int status = cb_viscous_damping(law_of(i), r, CB_PLANE, face.gap, bridge->volume,
+                                        &normal, &tangential);
+  if (status != CB_OK) fail(status, "viscous damping", i, face.gap, bridge->volume);
   const double gap_rate = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
   const double spin[3] = {omega[1] * n[2] - omega[2] * n[1], omega[2] * n[0] - omega[0] * n[2],
                           omega[0] * n[1] - omega[1] * n[0]};

@@ -1,12 +1,15 @@
 /* -*- c++ -*- ----------------------------------------------------------
    capbridge — LAMMPS binding: fix capillary/wall
 
-   Liquid bridges between the grains of pair style gran/capillary and flat walls or the
-   inside of a z cylinder about the z axis:
+   Liquid bridges between the grains of pair style gran/capillary and flat walls, the
+   inside of a z cylinder about the z axis, or the faces of a region:
      fix ID group capillary/wall xplane|yplane|zplane LO HI [angle DEG] [volume V]
      fix ID group capillary/wall zcylinder RADIUS [angle DEG] [volume V]
-   (LO or HI may be NULL; a cylinder is its tangent plane at each grain).  The wall's contact is not ours: a stock fix wall/gran on the same
-   planes gives it, and the forces add (its Coulomb limit reads its own contact force, which
+     fix ID group capillary/wall region REGION-ID [angle DEG] [volume V]
+   (LO or HI may be NULL; a curved wall is its tangent plane at each grain; a region's
+   faces are those of Region::surface, as fix wall/gran/region's, and may move).  The
+   wall's contact is not ours: a stock fix wall/gran (or wall/gran/region) on the same
+   walls gives it, and the forces add (its Coulomb limit reads its own contact force, which
    is eq. 12 of Richefeu 2007 as his eq. 1 defines f_n).  This fix adds the bridge's
    capillary force (the core's sphere-plane pair, r2 = CB_PLANE) and, with a viscous law, its
    viscous force.  The bridge of each grain and wall lives in a per-atom array of the fix
@@ -62,8 +65,8 @@ class FixCapillaryWall : public Fix {
   double memory_usage() override;
 
   // ---- used by fix capillary/liquid (Protocols 2, 3) ----
-  // one owned grain of a wet type in this fix's group and one of its walls, which hold a
-  // bridge (or a mark) or touch
+  // one owned grain of a wet type in this fix's group and one of its walls (a plane, the
+  // cylinder, a region's face), which hold a bridge (or a mark) or touch
   struct Contact {
     int atom, wall;
     double gap;       // distance of the centre from the wall minus the radius
@@ -73,7 +76,7 @@ class FixCapillaryWall : public Fix {
   // this step's (kept in the fix, so that no step allocates)
   const std::vector<Contact> &contacts();
   // Protocol 1's: the grains within the rupture distance of a bridge of this volume
-  void candidates(std::vector<Contact> &out, double volume) const;
+  void candidates(std::vector<Contact> &out, double volume);
   cb_bridge *bridge_at(int atom, int wall) const
   {
     return reinterpret_cast<cb_bridge *>(&state[atom][wall * CB_BRIDGE_DOUBLES]);
@@ -85,13 +88,24 @@ class FixCapillaryWall : public Fix {
   void census(double &count, double &liquid) const;
 
  protected:
-  enum { MAX_WALLS = 2, CYLINDER = 3 };
-  int nwalls;
-  int axis[MAX_WALLS];         // 0, 1, 2: the plane's normal; CYLINDER: the z cylinder
+  enum { MAX_WALLS = 2, CYLINDER = 3, REGION = 4 };
+  // one wall a grain's bridge may reach this step
+  struct Face {
+    int wall;        // the bridge's slot: the plane or the cylinder, or the region's face
+    int beyond;      // a region's face out of the grain's reach (holding a bridge or a mark)
+    double gap;      // distance of the centre from the wall minus the radius
+    double n[3];     // the wall's normal at the grain, towards its centre
+    double v[3];     // the wall's velocity at the contact point (a moving region), else 0
+  };
+  int nwalls;                  // the bridges each grain keeps: planes, 1, or the region's cmax
+  int axis[MAX_WALLS];         // 0, 1, 2: the plane's normal; CYLINDER, REGION
   double side[MAX_WALLS];      // +1: the grains are above the plane (LO), -1: below (HI)
   double position[MAX_WALLS];  // the plane's coordinate, or the cylinder's radius
   double wall_angle;           // keyword angle [rad]; < 0: the grains' own contact angle
   double volume_given;         // keyword volume; < 0: the type pair's
+  char *region_id;             // REGION: the region's ID, and the region (found at init)
+  class Region *region;
+  std::vector<Face> grain_faces;         // faces()'s (kept in the fix: no step allocates)
   int key_base;                // wall_key's offset: the walls of the capillary/wall fixes before
 
   double **state;              // per atom: nwalls cb_bridge's
@@ -116,10 +130,11 @@ class FixCapillaryWall : public Fix {
   void release_laws();
   void check_states();
   void check_timestep();
-  double wall_gap(int atom, int wall, double *normal, double &offset) const;
+  void prepare_walls();
+  const std::vector<Face> &faces(int atom, double reach, int with_beyond);
+  double grain_reach(int atom) const;
   double bridge_force(int atom, int wall, double gap, cb_bridge *bridge);
-  double viscous_normal(int atom, double gap, const double *normal, const cb_bridge *bridge,
-                        double *ft);
+  double viscous_normal(int atom, const Face &face, const cb_bridge *bridge, double *ft);
   [[noreturn]] void fail(int status, const char *what, int atom, double gap, double volume) const;
 };
 

@@ -26,12 +26,14 @@ expect() {
 }
 
 # fix capillary/wall
-expect wall_style "fix capillary/wall: unknown wall style 'ycylinder': allowed xplane, yplane, zplane, zcylinder" \
+expect wall_style "fix capillary/wall: unknown wall style 'ycylinder': allowed xplane, yplane, zplane, zcylinder, region" \
     gran/capillary "$GOOD" none " " "" "ycylinder 0.001 NULL NULL"
 expect wall_cylinder_radius "fix capillary/wall: zcylinder radius -0.004 must be > 0 and finite" \
     gran/capillary "$GOOD" none " " "" "zcylinder -0.004"
-expect wall_cylinder_args "fix capillary/wall: expected 'xplane\|yplane\|zplane LO HI' \(LO or HI may be NULL\) or 'zcylinder RADIUS'" \
+expect wall_cylinder_args "fix capillary/wall: expected 'xplane\|yplane\|zplane LO HI' \(LO or HI may be NULL\), 'zcylinder RADIUS' or 'region REGION-ID'" \
     gran/capillary "$GOOD" none " " "" "zcylinder"
+expect wall_region "fix capillary/wall: region nowhere does not exist: define it with the region command before this fix" \
+    gran/capillary "$GOOD" none " " "" "region nowhere"
 expect wall_both_null "fix capillary/wall: both LO and HI are NULL" \
     gran/capillary "$GOOD" none " " "" "zplane NULL NULL"
 expect wall_order "fix capillary/wall: LO 0.005 must be below HI -0.005" \
