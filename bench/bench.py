@@ -7,7 +7,9 @@ interleaves the two every few milliseconds); parts 2 and 3 alternate the sides, 
 rotating from one repeat to the next.  Nothing here is a test: no time is asserted anywhere.
 
   1  LAMMPS: gran/capillary with bridges (law richefeu) and with no liquid, against LAMMPS's
-     own dry gran/hooke/history, on the cyclic compression scene (bench/in.cycle.lammps)
+     own dry gran/hooke/history, on the cyclic compression scene (bench/in.cycle.lammps);
+     beside them what a LAMMPS user picks today: pair_style granular, hooke with tangential
+     history (the same physics as gran/hooke/history) and the cohesive jkr
   2  LIGGGHTS: cohesion capillary against LIGGGHTS's own easo/capillary/viscous on the same
      scene (bench/in.cycle.liggghts)
   3  MPI: the default split-bottom scene (first 0.2 s of rotation) on 1 and 2 ranks, and the
@@ -154,6 +156,8 @@ def part1(ctx):
     work = os.path.join(OUT, "part1")
     sides = {
         "stock": {"side": "stock"},
+        "granular": {"side": "granular"},
+        "jkr": {"side": "jkr"},
         "off": {"side": "off", "plugin": PLUGIN},
         "wet": {"side": "wet", "plugin": PLUGIN},
     }
@@ -215,6 +219,11 @@ def part1(ctx):
              "time / stock: median (min-max) | target |\n|---|---|---:|---:|---|\n"
              f"| stock | gran/hooke/history (dry), beside itself | {us('stock')} | "
              f"{cell('stock')} | 1 |\n"
+             f"| granular | granular: hooke, tangential linear_history, damping "
+             f"mass_velocity (dry, the stock physics) | {us('granular')} | "
+             f"{cell('granular')} | — |\n"
+             f"| jkr | granular: jkr (E 1e6 Pa, Poisson 0.3, 0.1 J/m^2), the same tangential "
+             f"and damping (cohesive) | {us('jkr')} | {cell('jkr')} | — |\n"
              f"| off | gran/capillary, volume 0 | {us('off')} | {cell('off')} | <= 1.02 |\n"
              f"| wet | gran/capillary, law richefeu, 1e-11 m^3 on every contact | {us('wet')} "
              f"| {cell('wet')} | <= 1.10 (aim 1.05) |\n\n"
@@ -232,7 +241,9 @@ def part1(ctx):
     summary = (f"LAMMPS, {n} grains: wet / stock dry **{statistics.median(ratios['wet']):.2f}** "
                f"(target 1.10), liquid off / stock dry "
                f"**{statistics.median(ratios['off']):.3f}** (target 1.02); the same method "
-               f"gives stock / stock {statistics.median(ratios['stock']):.3f}; instructions "
+               f"gives stock / stock {statistics.median(ratios['stock']):.3f}; LAMMPS's "
+               f"granular hooke / stock {statistics.median(ratios['granular']):.2f}, granular "
+               f"jkr / stock {statistics.median(ratios['jkr']):.2f}; instructions "
                f"(callgrind, 2000 grains) wet / stock "
                f"{counted['wet'][0] / counted['stock'][0]:.2f}, off / stock "
                f"{counted['off'][0] / counted['stock'][0]:.3f}")
