@@ -263,6 +263,11 @@ void PairGranCapillary::compute(int eflag, int vflag)
   // bench/README.md): a scene pays only for what it uses
   // and a wet run without a viscous law (viscous_possible, init_style) a loop without the
   // viscous force: its check cost ~5 % of the instructions of a wet scene's pair loop
+#ifdef CAPBRIDGE_STRUCTURE_FLOOR
+  // bench/'s structure floor (CMake option): the wet list and history, the dry forces
+  form_bridges_and_forces<false, false>();
+  return;
+#endif
   if (!bridges_possible)
     form_bridges_and_forces<false, false>();
   else if (viscous_possible)
