@@ -27,22 +27,13 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import liggghts_common as lc  # noqa: E402
 
-RADIUS, DENSITY, V0, KN, ALPHA = 1e-3, 2500.0, 1.0, 1e4, 0.1
-VOLUME, MIN_GAP = 1e-11, 1e-6
-MSTAR = 0.5 * DENSITY * 4.0 / 3.0 * math.pi * RADIUS ** 3
-RSTAR = RADIUS / 2.0
+# the collision's parameters and the lubrication impulse: the wet-collision study's, one home
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
+    os.path.abspath(__file__)))), "inputs", "wet_collision"))
+from study import (ALPHA, DENSITY, KN, MIN_GAP, MSTAR, RADIUS, RSTAR, V0,  # noqa: E402,F401
+                   VOLUME, impulse_integral)
+
 VISCOSITIES = (0.0, 1e-3, 1e-2, 3e-2, 0.06, 0.1, 0.15, 0.2, 0.3)
-
-
-def impulse_integral():
-    """L of the lubrication impulse (theta 0, rupture distance V^(1/3), Lian's)."""
-    def chi(s):
-        return (1.0 - 1.0 / math.sqrt(1.0 + VOLUME / (math.pi * RSTAR * s * s))) ** 2
-    n, a, b = 20000, math.log(MIN_GAP), math.log(VOLUME ** (1.0 / 3.0))
-    h = (b - a) / n
-    total = sum((1 if k in (0, n) else (4 if k % 2 else 2)) * chi(math.exp(a + k * h))
-                for k in range(n + 1))
-    return chi(MIN_GAP) + total * h / 3.0
 
 
 def collide(env, workdir, eta):
