@@ -30,6 +30,7 @@
 
 #include "capbridge.h"
 #include "capbridge_liggghts_liquid.h"
+#include "capbridge_liggghts_pass.h"
 #include "contact_interface.h"
 
 #include "atom.h"
@@ -44,14 +45,16 @@
 
 namespace capbridge_liggghts {
 
-/* A bridge that exists after this pass's transitions, as the model's pair loop saw it. */
+/* A bridge that exists after this pass's transitions, as the model's pair loop (or a wall's
+ * model) saw it. */
 struct HeldBridge {
     double *history;     // its cb_bridge in the contact history
     const cb_law *law;
-    int i, j;            // i local; j local or ghost
+    int i, j;            // i local; j local or ghost, or -1: a wall
     int itype, jtype;
-    double ra, rb;       // the radii in the core's order (smaller first)
+    double ra, rb;       // the radii in the core's order (smaller first; a wall's rb CB_PLANE)
     double radsum, gap;
+    long long key_j;     // j's key in the receiver choice: its atom ID, or the wall's key
 };
 
 class Protocol3 : protected LAMMPS_NS::Pointers {
@@ -85,7 +88,18 @@ class Protocol3 : protected LAMMPS_NS::Pointers {
         const bool j_local = d.j < atom->nlocal;
         consider(d.i, -d.radi * en_z, atom->tag[d.j]);
         if (j_local) consider(d.j, d.radj * en_z, atom->tag[d.i]);
-        const HeldBridge held = {history, law, d.i, d.j, d.itype, d.jtype, ra, rb, d.radsum, gap};
+        const HeldBridge held = {history, law, d.i, d.j, d.itype, d.jtype, ra, rb, d.radsum,
+                                 gap, atom->tag[d.j]};
+        held_.push_back(held);
+    }
+
+    /* A wall bridge that exists after its transition: a receiver for its grain, the wall's
+     * key (negative) its partner (the contact point lies r en_z below the grain's centre). */
+    void offer_wall(const WallBridge &b)
+    {
+        consider(b.i, -b.r * b.en[2], b.key);
+        const HeldBridge held = {b.history, b.law, b.i, -1, b.itype, b.wall_type, b.r,
+                                 CB_PLANE, b.r, b.gap, b.key};
         held_.push_back(held);
     }
 
@@ -125,8 +139,8 @@ class Protocol3 : protected LAMMPS_NS::Pointers {
         const double *receiver = receiver_->vector_atom, *deposit = deposit_->vector_atom;
         const int *tag = atom->tag;
         double added = 0.0;
-        if (deposit[b.i] > 0.0 && receiver[b.i] == tag[b.j]) added += deposit[b.i];
-        if (deposit[b.j] > 0.0 && receiver[b.j] == tag[b.i]) added += deposit[b.j];
+        if (deposit[b.i] > 0.0 && receiver[b.i] == (double)b.key_j) added += deposit[b.i];
+        if (b.j >= 0 && deposit[b.j] > 0.0 && receiver[b.j] == tag[b.i]) added += deposit[b.j];
         if (!(added > 0.0)) return 0.0;
         cb_bridge bridge;
         std::memcpy(&bridge, b.history, sizeof bridge);
@@ -136,8 +150,9 @@ class Protocol3 : protected LAMMPS_NS::Pointers {
             char text[400];
             snprintf(text, sizeof text,
                      "cohesion model capillary: Protocol 3 could not grow the bridge of "
-                     "particles %d and %d (radii %g and %g m, gap %g m) to %g m^3: %s",
-                     tag[b.i], tag[b.j], b.ra, b.rb, b.gap, *volume, cb_status_message(status));
+                     "particle %d and %s %lld (radii %g and %g m, gap %g m) to %g m^3: %s",
+                     tag[b.i], b.j < 0 ? "the wall of key" : "particle", b.key_j, b.ra, b.rb,
+                     b.gap, *volume, cb_status_message(status));
             error->one(FLERR, text);
         }
         std::memcpy(b.history, &bridge, sizeof bridge);

@@ -110,6 +110,9 @@ class Protocols {
                                              : "liquid " + liquid + " with 'start bridges'");
     }
 
+    /* any keyword of the protocols given (every, vmax, start, remove, remove_seed) */
+    bool given_any() const { return every_given_ || vmax_given_ || start.given_any(); }
+
     /* The design volume given with vmax; 0 when not given (the reach then takes the core's
      * cb_protocol_design_volume). */
     double vmax() const { return vmax_given_ ? std::atof(vmax_.c_str()) : 0.0; }

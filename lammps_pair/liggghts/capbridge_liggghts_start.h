@@ -105,6 +105,9 @@ class LiquidStart : protected LAMMPS_NS::Pointers {
                       input);
     }
 
+    /* start, remove or remove_seed given */
+    bool given_any() const { return start_given_ || remove_given_ || seed_given_; }
+
     /* After the keywords are read: the values, and the mark of the start. */
     void post_settings(const std::string &liquid)
     {

@@ -10,8 +10,20 @@
  * bridge of bridgeVolume (grain type, wall type) formed at contact, held to its rupture
  * distance, its force on the grain (cb_bridge_step, cb_bridge_force).  Its state is the same
  * seven values as a pair's, in the wall's contact history (per grain for a primitive wall,
- * per triangle for a mesh: restart files keep it).  Liquid fixed only: the liquid of a broken
- * bridge leaves, as between grains with liquid fixed (the protocols at walls are LAMMPS's).
+ * per triangle for a mesh: restart files keep it).
+ *
+ * Liquid: the pair_style's.  With liquid fixed the bridge has bridgeVolume and the liquid of a
+ * broken bridge leaves, as between grains.  Under Protocols 2 and 3 (primitive walls; `liquid
+ * protocol2|3` given to both, the pair_style with `start free`) the wall holds no liquid: the
+ * bridge forms at contact from the grain's free liquid, its share counted with the grain's
+ * other new bridges of the step (the pair's model finishes the formations after the walls:
+ * capbridge_liggghts_pass.h), its liquid goes back to the grain when it breaks, it is a
+ * Protocol 3 receiver of its grain (the wall's key its partner), and the liquid census and
+ * the pair's tally (bridgedLiquid, bridgeCount: its one grain end) count it.  The reach is
+ * the pair's design volume.  Not in LIGGGHTS yet (LAMMPS's fix capillary/wall has them):
+ * Protocol 1 and `start bridges` (a distribution in the pair's pass, before the walls'
+ * contacts are known), the removal of bridges, mesh walls (fix contacthistory/mesh copies a
+ * contact's history to the coplanar triangle a grain moves onto: the bridge's liquid with it).
  *
  * Reach: fix wall/gran calls the model for a grain apart from the wall only while its gap is
  * below (contact_distance_factor - 1) r, so the wall registers the factor of its design
@@ -25,6 +37,7 @@
 
 #include "atom.h"
 #include "capbridge.h"
+#include "capbridge_liggghts_pass.h"
 #include "capbridge_liggghts_reach.h"
 #include "contact_interface.h"
 #include "comm.h"
@@ -48,7 +61,8 @@ namespace capbridge_liggghts {
 class WallBridges : protected LAMMPS_NS::Pointers {
   public:
     explicit WallBridges(LAMMPS_NS::LAMMPS *lmp)
-        : Pointers(lmp), wall_(NULL), history_offset_(-1), ntypes_(0), warned_beyond_(false)
+        : Pointers(lmp), wall_(NULL), history_offset_(-1), ntypes_(0), pass_(NULL), key_(0),
+          warned_beyond_(false)
     {
     }
 
@@ -60,14 +74,11 @@ class WallBridges : protected LAMMPS_NS::Pointers {
         history_offset_ = history_offset;
     }
 
-    /* At the init of every run (fix wall/gran's init, before the neighbor lists): the design
-     * rupture distance of the wall's type with every grain type, the contact distance factor
-     * that covers it, and a primitive wall's skin. */
-    void connect(PropertyRegistry &registry, const ReachLaws &laws,
-                 double **bridge_volume)
+    /* At the init of every run (fix wall/gran's init, after the pair's, before the neighbor
+     * lists), after connect_liquid: the design rupture distance of the wall's type with every
+     * grain type, the contact distance factor that covers it, and a primitive wall's skin. */
+    void connect(PropertyRegistry &registry, const ReachLaws &laws, double **bridge_volume)
     {
-        if (!wall_) error->all(FLERR, "cohesion model capillary: a wall model outside fix "
-                                      "wall/gran (internal)");
         ntypes_ = laws.ntypes;
         design_rupture_.assign((ntypes_ + 1) * (ntypes_ + 1), 0.0);
         // a primitive wall's type is its own; a mesh wall's is each mesh's (fix wall/gran
@@ -94,7 +105,8 @@ class WallBridges : protected LAMMPS_NS::Pointers {
         for (size_t w = 0; w < wall_types.size(); ++w) {
             const int wall_type = wall_types[w];
             for (int a = 1; a <= ntypes_; ++a) {
-                const double volume = bridge_volume[a][wall_type];
+                const double volume =
+                    pass_ ? pass_->design_volume() : bridge_volume[a][wall_type];
                 double rupture = 0.0, pair_ratio = 0.0;
                 const cb_status status = cb_reach(laws.of(a, wall_type), radii, plane, volume,
                                                   &rupture, NULL, &pair_ratio);
@@ -121,35 +133,30 @@ class WallBridges : protected LAMMPS_NS::Pointers {
             char text[500];
             snprintf(text, sizeof text, "cohesion model capillary: fix %s is a primitive wall, "
                      "whose grain list LIGGGHTS builds with the neighbor skin alone; its "
-                     "bridges (bridgeVolume with the wall's type %d) rupture up to %g m from "
-                     "it, beyond the skin %g m: a bridged grain would leave the list with its "
-                     "bridge.  Give 'neighbor %s bin' or more (or a mesh wall)",
-                     wall_->id, largest_type, largest, neighbor->skin,
-                     format_at_least(needed).c_str());
+                     "bridges (%s with the wall's type %d) rupture up to %g m from it, beyond "
+                     "the skin %g m: a bridged grain would leave the list with its bridge.  "
+                     "Give 'neighbor %s bin' or more%s",
+                     wall_->id, pass_ ? "the pair_style's design volume" : "bridgeVolume",
+                     largest_type, largest, neighbor->skin, format_at_least(needed).c_str(),
+                     pass_ ? "" : " (or a mesh wall)");
             error->all(FLERR, text);
         }
     }
 
     /* The bridge of grain d.i and the wall in one call: its transition (in real force passes,
-     * d.computeflag) and its force on the grain; volume is bridgeVolume of the two types. */
+     * d.computeflag) and its force on the grain; volume is bridgeVolume of the two types
+     * (liquid fixed), en the unit normal from the wall to the grain. */
     double force(const cb_law *law, LIGGGHTS::ContactModels::SurfacesCloseData &d,
-                 const double gap, const double volume)
+                 const double gap, const double volume, const double *en)
     {
         if (!d.contact_history) fail("no contact history for a wall contact (internal)");
+        if (pass_) return protocol_force(law, d, gap, en);
         double *const hist = &d.contact_history[history_offset_];
         cb_bridge bridge;
         std::memcpy(&bridge, hist, sizeof bridge);
         const bool updating = d.computeflag != 0;
         const double r = d.radi;
-        if (updating && update->setupflag) {
-            // every state checked once where it enters (a restart file's)
-            check(cb_bridge_check_state(&bridge), "bridge state at setup", d, gap, bridge.volume);
-            if (bridge.active != 0.0) {
-                check(cb_bridge_set_volume(law, r, CB_PLANE, bridge.volume, &bridge),
-                      "bridge constants at setup", d, gap, bridge.volume);
-                std::memcpy(hist, &bridge, sizeof bridge);
-            }
-        }
+        if (updating && update->setupflag) setup_state(law, d, gap, bridge, hist);
         double capillary = 0.0;
         bool have_force = false;
         if (updating && cb_bridge_held(law, r, CB_PLANE, gap, &bridge, &capillary)) {
@@ -175,7 +182,104 @@ class WallBridges : protected LAMMPS_NS::Pointers {
         return capillary;
     }
 
+    /* At the init of every run, first: the liquid of the wall's bridges is the pair_style's,
+     * fixed (no pass: pair_pass() NULL), or the pair's Protocol 2 or 3, whose pass this wall
+     * joins. */
+    void connect_liquid(LiquidPass *pass, const std::string &liquid)
+    {
+        if (!wall_) error->all(FLERR, "cohesion model capillary: a wall model outside fix "
+                                      "wall/gran (internal)");
+        pass_ = NULL;
+        const std::string pair = pass ? pass->liquid() : "fixed";
+        if (liquid != pair) {
+            const std::string text =
+                std::string("cohesion model capillary in fix ") + wall_->id + ": 'liquid " +
+                liquid + "' must be the pair_style's liquid, 'liquid " + pair +
+                "' (the grains and the walls share one liquid: " +
+                (pass ? "fixed-volume wall bridges beside the protocols would make and destroy "
+                        "the liquid they conserve)"
+                      : "the protocols need pair_style gran with cohesion capillary under the "
+                        "same liquid)");
+            error->all(FLERR, text.c_str());
+        }
+        if (liquid == "fixed") return;
+        if (wall_->is_mesh_wall()) {
+            const std::string text =
+                std::string("cohesion model capillary in fix ") + wall_->id + ": 'liquid " +
+                liquid + "' takes primitive walls only in LIGGGHTS: a mesh keeps its bridges per "
+                "triangle, and fix contacthistory/mesh copies a contact's history to the "
+                "coplanar triangle a grain moves onto, the bridge's liquid with it (LAMMPS's "
+                "fix capillary/wall has region walls)";
+            error->all(FLERR, text.c_str());
+        }
+        if (pass->starts_with_distribution()) {
+            const std::string text =
+                std::string("cohesion model capillary in fix ") + wall_->id + ": the pair_style's "
+                "'liquid " + liquid + "' starts with a Protocol 1 distribution ('start bridges', "
+                "its default), which in LIGGGHTS comes before fix wall/gran's contacts are "
+                "known: give the pair_style 'start free' (the bridges then form at contact)";
+            error->all(FLERR, text.c_str());
+        }
+        pass_ = pass;
+        key_ = pass_->attach_wall();
+    }
+
   private:
+    /* Protocols 2, 3: the bridge of grain d.i and the wall, its transition in the pair's open
+     * pass (formations are the pair's model's, at the end of the pass), its force. */
+    double protocol_force(const cb_law *law, LIGGGHTS::ContactModels::SurfacesCloseData &d,
+                          const double gap, const double *en)
+    {
+        double *const hist = &d.contact_history[history_offset_];
+        cb_bridge bridge;
+        std::memcpy(&bridge, hist, sizeof bridge);
+        const bool updating = d.computeflag != 0 && pass_->open();
+        const double r = d.radi;
+        if (updating && update->setupflag) setup_state(law, d, gap, bridge, hist);
+        double capillary = 0.0;
+        bool have_force = false;
+        if (updating && cb_bridge_held(law, r, CB_PLANE, gap, &bridge, &capillary)) {
+            have_force = true;  // held in contact: its stored force
+        } else if (updating && !cb_bridge_dry(&bridge)) {
+            cb_transition change = CB_BRIDGE_HELD;
+            double released = 0.0;
+            check(cb_bridge_step(law, r, CB_PLANE, gap, 0.0, &bridge, &change, &released,
+                                 &capillary), "bridge update", d, gap, bridge.volume);
+            have_force = true;
+            std::memcpy(hist, &bridge, sizeof bridge);
+            if (change == CB_BRIDGE_RUPTURED) pass_->wall_release(d.i, r, released);
+        }
+        const WallBridge b = {hist, law, d.i, d.itype, d.jtype, key_, r, gap,
+                              {en[0], en[1], en[2]}};
+        if (updating && bridge.active == 0.0 && cb_bridge_may_form(&bridge, gap) &&
+            pass_->free_liquid(d.i) > 0.0)
+            pass_->wall_formation(b);
+        if (updating && bridge.active != 0.0 &&
+            cb_bridge_beyond_reach(gap, design_rupture_[d.itype * (ntypes_ + 1) + d.jtype])) {
+            rupture_beyond_reach(d, gap, bridge.volume);
+            pass_->wall_release(d.i, r, bridge.volume);
+            std::memset(&bridge, 0, sizeof bridge);
+            std::memcpy(hist, &bridge, sizeof bridge);
+        }
+        if (bridge.active == 0.0) return 0.0;
+        if (updating) pass_->wall_held(b, bridge.volume);
+        if (!have_force)
+            check(cb_bridge_force(law, r, CB_PLANE, gap, &bridge, &capillary), "force", d, gap,
+                  bridge.volume);
+        return capillary;
+    }
+
+    /* every state checked once where it enters (a restart file's), its constants derived */
+    void setup_state(const cb_law *law, const LIGGGHTS::ContactModels::SurfacesCloseData &d,
+                     const double gap, cb_bridge &bridge, double *hist)
+    {
+        check(cb_bridge_check_state(&bridge), "bridge state at setup", d, gap, bridge.volume);
+        if (bridge.active == 0.0) return;
+        check(cb_bridge_set_volume(law, d.radi, CB_PLANE, bridge.volume, &bridge),
+              "bridge constants at setup", d, gap, bridge.volume);
+        std::memcpy(hist, &bridge, sizeof bridge);
+    }
+
     /* A bridge held beyond the reach (a volume above bridgeVolume, from a restart file) is
      * ruptured now, before its grain leaves the wall's list (cb_bridge_beyond_reach); warned
      * once on the rank that saw it. */
@@ -220,6 +324,8 @@ class WallBridges : protected LAMMPS_NS::Pointers {
     int history_offset_;
     int ntypes_;
     std::vector<double> design_rupture_;  // per pair of types, [grain * (ntypes + 1) + wall]
+    LiquidPass *pass_;                    // Protocols 2, 3: the pair's pass; NULL: liquid fixed
+    long long key_;                       // this wall's key in the pass (negative)
     bool warned_beyond_;
 };
 

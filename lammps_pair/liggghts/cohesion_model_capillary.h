@@ -29,7 +29,10 @@
      - parameters come from fix property/global (surfaceTension, contactAngle,
        bridgeVolume), per-particle free liquid from fix property/atom freeLiquid.
      - walls: in a fix wall/gran, the same model makes the bridges between grains and the
-       wall, fixed volume (capbridge_liggghts_wall.h).
+       wall (capbridge_liggghts_wall.h), of fixed volume or, at primitive walls, under
+       Protocols 2 and 3 with the pair's liquid: then the end of the pair's pass (the
+       formations of the step, the pair's and the walls', with the count of both) waits for
+       the walls, in fix capillaryFinish (capbridge_liggghts_pass.h, fix_capillary_finish.h).
      - beside this file: capbridge_liggghts_settings.h (the keywords), _laws.h (the law of
        each pair of atom types), _reach.h (how far
        LIGGGHTS visits a pair, the contact distance factor, and the bridges held beyond it,
@@ -64,6 +67,7 @@ COHESION_MODEL(COHESION_CAPILLARY,capillary,9)
 #include "capbridge_liggghts_checks.h"
 #include "capbridge_liggghts_laws.h"
 #include "capbridge_liggghts_liquid.h"
+#include "capbridge_liggghts_pass.h"
 #include "capbridge_liggghts_protocols.h"
 #include "capbridge_liggghts_reach.h"
 #include "capbridge_liggghts_timestep.h"
@@ -76,6 +80,7 @@ COHESION_MODEL(COHESION_CAPILLARY,capillary,9)
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_capillary_finish.h"
 #include "fix_contact_history.h"
 #include "force.h"
 #include "modify.h"
@@ -102,10 +107,12 @@ namespace MODEL_PARAMS
 
 namespace capbridge_liggghts
 {
-    /* A pair formed in this pass under Protocol 2: finished in endPass(). */
+    /* A pair (or a grain and a wall: j -1, rb CB_PLANE) that may form a bridge in this pass
+     * under Protocols 2, 3: finished at the end of the pass (finish_formations). */
     struct Candidate {
         double *history;
         int *contact_flags;
+        const cb_law *law;
         int i, j;
         int itype, jtype;
         double ra, rb, gap;
@@ -118,7 +125,8 @@ namespace LIGGGHTS {
 namespace ContactModels {
 
   template<>
-  class CohesionModel<COHESION_CAPILLARY> : public CohesionModelBase {
+  class CohesionModel<COHESION_CAPILLARY> : public CohesionModelBase,
+                                             public capbridge_liggghts::LiquidPass {
 
   public:
     CohesionModel(LAMMPS * lmp, IContactHistorySetup * hsetup, class ContactModelBase * cmb) :
@@ -139,6 +147,9 @@ namespace ContactModels {
       fix_bridged_(NULL),
       fix_count_(NULL),
       updating_(false),
+      open_(false),
+      nwalls_(0),
+      finish_fix_(NULL),
       census_(false),
       counting_(false),
       timing_(false),
@@ -159,6 +170,14 @@ namespace ContactModels {
       hsetup->add_history_value("capillaryBridgeRadiusProduct", "0");
       hsetup->add_history_value("capillaryBridgeInverseDecayLength", "0");
       if (wall_) wall_bridges_.attach(hsetup, history_offset_);
+    }
+
+    /* a pair_style issued again deletes this model, not fix capillaryFinish */
+    ~CohesionModel()
+    {
+      const int k = finish_fix_ ? modify->find_fix("capillaryFinish") : -1;
+      if (k >= 0 && modify->fix[k] == finish_fix_ && finish_fix_->pass == this)
+        finish_fix_->pass = NULL;
     }
 
     void registerSettings(Settings & settings)
@@ -193,7 +212,6 @@ namespace ContactModels {
     inline void postSettings(IContactHistorySetup *, ContactModelBase *)
     {
       per_atom_liquid_ = (liquid_ != "fixed");
-      protocols_.post_settings(liquid_, error);  // (an error for a keyword it does not take)
       tally_ = (tally_word_ == "on");
       if (law_given_) {
         if (cb_model_from_name(law_name_.c_str(), &model_) != CB_OK)
@@ -202,14 +220,22 @@ namespace ContactModels {
       }
       if (wall_) {
         // what the wall bridges do not have yet: said, not ignored
-        if (per_atom_liquid_)
-          fail_all("cohesion model capillary in a fix wall/gran takes liquid fixed (the wall "
-                   "bridges have bridgeVolume), not 'liquid " + liquid_ + "'");
+        // (no fix made here: this runs inside fix wall/gran's constructor, in Modify::add_fix)
+        if (liquid_ == "protocol1")
+          fail_all("cohesion model capillary in a fix wall/gran takes 'liquid fixed', "
+                   "'protocol2' or 'protocol3', not 'liquid protocol1' (Protocol 1 at walls is "
+                   "LAMMPS's fix capillary/wall's; in LIGGGHTS its distribution, in the pair's "
+                   "pass, comes before fix wall/gran's contacts are known)");
+        if (protocols_.given_any())
+          fail_all("cohesion model capillary in a fix wall/gran: the keywords every, vmax, "
+                   "start, remove and remove_seed are the pair_style's (the wall's bridges "
+                   "take the pair's liquid and its reach)");
         if (tally_ || viscous_word_ == "on")
           fail_all("cohesion model capillary in a fix wall/gran takes neither 'tally on' nor "
                    "'viscous on' (the pair_style's tally counts the bridges between grains)");
         return;
       }
+      protocols_.post_settings(liquid_, error);  // (an error for a keyword it does not take)
       connect_internal_fixes();
       if (per_atom_liquid_) account_.create();
       if (protocols_.protocol3) protocols_.receivers.create();
@@ -232,6 +258,8 @@ namespace ContactModels {
       registry.registerProperty("contactAngle", &MODEL_PARAMS::createContactAngle);
       registry.connect("surfaceTension", surface_tension_, caller);
       registry.connect("contactAngle", contact_angle_, caller);
+      // a wall's liquid is the pair_style's: checked before the properties it would need
+      if (wall_) wall_bridges_.connect_liquid(pair_pass(), liquid_);
       if (!per_atom_liquid_) {
         registry.registerProperty("bridgeVolume", &MODEL_PARAMS::createCapillaryBridgeVolume);
         registry.connect("bridgeVolume", bridge_volume_, caller);
@@ -257,6 +285,55 @@ namespace ContactModels {
                              per_atom_liquid_ ? fix_free_->vector_atom : NULL,
                              protocols_.vmax(), history_offset_);
       protocols_.connect(laws_.laws, liquid_);
+      if (per_atom_liquid_) make_finish_fix();
+    }
+
+    /* ------------------------------------------ the pass as the walls see it (LiquidPass) */
+
+    long long attach_wall() { return -(++nwalls_); }
+    const char *liquid() const { return liquid_.c_str(); }
+    bool starts_with_distribution() const { return protocols_.start.bridges; }
+    double design_volume() const { return reach_.design_volume(); }
+    bool open() const { return open_; }
+    double free_liquid(const int i) const { return fix_free_->vector_atom[i]; }
+
+    void wall_formation(const capbridge_liggghts::WallBridge &b)
+    {
+      fix_formations_->vector_atom[b.i] += 1.0;
+      capbridge_liggghts::Candidate c;
+      c.history = b.history;
+      c.contact_flags = NULL;
+      c.law = b.law;
+      c.i = b.i;
+      c.j = -1;
+      c.itype = b.itype;
+      c.jtype = b.wall_type;
+      c.ra = b.r;
+      c.rb = CB_PLANE;
+      c.gap = b.gap;
+      for (int k = 0; k < 3; ++k) c.en[k] = b.en[k];
+      c.swap = false;
+      candidates_.push_back(c);
+    }
+
+    void wall_release(const int i, const double r, const double volume)
+    {
+      double grain = 0.0, wall = 0.0;  // the wall holds no liquid: all of it to the grain
+      check_at(cb_protocol2_release(volume, r, CB_PLANE, &grain, &wall),
+               "Protocol 2 release at a wall", i, -1, 0.0, volume);
+      released_[i] += grain;
+    }
+
+    void wall_held(const capbridge_liggghts::WallBridge &b, const double volume)
+    {
+      if (counting_) account_.add_bridge(true, volume);  // all of it: its one grain's
+      if (tally_) tally(b.i, -1, 2.0 * volume);          // the grain's end holds it all
+      if (protocols_.protocol3) protocols_.receivers.offer_wall(b);
+    }
+
+    void finish_deferred()
+    {
+      if (open_) end_pass();
     }
 
     void beginPass(SurfacesIntersectData & sidata, ForceData &, ForceData &)
@@ -276,8 +353,17 @@ namespace ContactModels {
       if (timing_) timestep_.begin(ntypes_);
       const int nall = atom->nlocal + atom->nghost;
       if (per_atom_liquid_) {
+        if (open_)
+          error->all(FLERR, "cohesion model capillary: the last step's liquid pass was not "
+                            "finished: fix capillaryFinish, which finishes it after the walls, "
+                            "was deleted; do not unfix it");
+        open_ = true;
         if (counting_) account_.begin(fix_free_->vector_atom);
         protocols_.begin_pass(laws_.laws, history_offset_, fix_free_->vector_atom, reach_);
+        if (nwalls_ > 0 && protocols_.start.removing())
+          error->all(FLERR, "cohesion model capillary: removing bridges (fix capillaryRemove) "
+                            "while walls hold bridges is not supported in LIGGGHTS yet (LAMMPS's "
+                            "fix capillary/liquid removes wall bridges too)");
         fix_free_->do_forward_comm();
         double *nform = fix_formations_->vector_atom;
         for (int k = 0; k < nall; ++k) nform[k] = 0.0;
@@ -294,7 +380,16 @@ namespace ContactModels {
     void endPass(SurfacesIntersectData &, ForceData &, ForceData &)
     {
       if (wall_ || !updating_) return;
+      // with walls in the pass, fix capillaryFinish ends it after them (finish_deferred)
+      if (!(open_ && nwalls_ > 0)) end_pass();
+    }
+
+    /* The end of an updating pass: the formations of the step (the pair's and the walls'),
+     * the removal's report, the census, the time-step check. */
+    void end_pass()
+    {
       updating_ = false;
+      open_ = false;
       if (per_atom_liquid_) finish_formations();
       if (protocols_.start.removing()) protocols_.start.report(liquid_);
       if (counting_) account_.end(fix_free_->vector_atom);
@@ -317,7 +412,7 @@ namespace ContactModels {
     {
       const double gap = sidata.r - sidata.radsum;  // a wall's radsum is the grain's radius
       const double capillary =
-          wall_ ? wall_force(sidata, gap) : pair_force(sidata, gap, sidata.en);
+          wall_ ? wall_force(sidata, gap, sidata.en) : pair_force(sidata, gap, sidata.en);
       // sidata.Fn is left as the normal model set it, f_n^e + f_n^d: the tangential model
       // (called after this one) limits its force by mu |sidata.Fn|, Richefeu 2007 eq. 12
       // mu (f_n - f_n^c) with eq. 1's f_n = f_n^e + f_n^d + f_n^c: the contact force alone
@@ -343,7 +438,7 @@ namespace ContactModels {
       const double en[3] = {scdata.delta[0] * rinv, scdata.delta[1] * rinv,
                             scdata.delta[2] * rinv};
       const double gap = r - scdata.radsum;
-      const double capillary = wall_ ? wall_force(scdata, gap) : pair_force(scdata, gap, en);
+      const double capillary = wall_ ? wall_force(scdata, gap, en) : pair_force(scdata, gap, en);
       if (capillary > 0.0) {
         apply(capillary, en, i_forces, j_forces);
         scdata.has_force_update = true;
@@ -353,11 +448,12 @@ namespace ContactModels {
     }
 
   private:
-    /* The bridge of a grain and the wall of a fix wall/gran (j is the wall): fixed volume. */
-    double wall_force(SurfacesCloseData & d, const double gap)
+    /* The bridge of a grain and the wall of a fix wall/gran (j is the wall): fixed volume,
+     * or the pair's Protocol 2 or 3 (en: from the wall to the grain). */
+    double wall_force(SurfacesCloseData & d, const double gap, const double *en)
     {
       return wall_bridges_.force(laws_.of(d.itype, d.jtype), d, gap,
-                                 bridge_volume_[d.itype][d.jtype]);
+                                 per_atom_liquid_ ? 0.0 : bridge_volume_[d.itype][d.jtype], en);
     }
 
     /* The bridge of one pair: its transition (in updating passes) and its force. */
@@ -475,6 +571,7 @@ namespace ContactModels {
       capbridge_liggghts::Candidate c;
       c.history = hist;
       c.contact_flags = d.contact_flags;
+      c.law = laws_.of(d.itype, d.jtype);
       c.i = d.i;
       c.j = d.j;
       c.itype = d.itype;
@@ -544,7 +641,8 @@ namespace ContactModels {
       return offer;
     }
 
-    /* Protocol 2: the bridges that formed in this pass take their liquid. */
+    /* Protocols 2, 3: the bridges that formed in this pass, between grains and at walls
+     * (j -1: the wall holds no liquid), take their liquid. */
     void finish_formations()
     {
       fix_formations_->do_forward_comm();
@@ -554,29 +652,34 @@ namespace ContactModels {
       double **f = atom->f;
       for (size_t k = 0; k < candidates_.size(); ++k) {
         const capbridge_liggghts::Candidate &c = candidates_[k];
+        const bool wall = c.j < 0;
         // each of the nform[i] new bridges of particle i takes 1/nform[i] of its liquid
         double from_i = formation_share(free_liquid[c.i], nform[c.i], c);
-        double from_j = formation_share(free_liquid[c.j], nform[c.j], c);
+        double from_j = wall ? 0.0 : formation_share(free_liquid[c.j], nform[c.j], c);
         double volume = 0.0;
         double *from_a = c.swap ? &from_j : &from_i;
         double *from_b = c.swap ? &from_i : &from_j;
         check_at(cb_protocol2_take(from_a, from_b, &volume), "Protocol 2 take", c.i, c.j,
                  c.gap, volume);
-        const cb_law *law = laws_.of(c.itype, c.jtype);
         cb_bridge bridge;
         std::memset(&bridge, 0, sizeof bridge);
         cb_transition change = CB_BRIDGE_STAYS_DRY;
         double released = 0.0, capillary = 0.0;
-        check_at(cb_bridge_step(law, c.ra, c.rb, c.gap, volume, &bridge, &change, &released,
+        check_at(cb_bridge_step(c.law, c.ra, c.rb, c.gap, volume, &bridge, &change, &released,
                                 &capillary),
                  "bridge update", c.i, c.j, c.gap, volume);
         if (change != CB_BRIDGE_FORMED) continue;
         std::memcpy(c.history, &bridge, sizeof bridge);
         if (c.contact_flags) *c.contact_flags |= CONTACT_COHESION_MODEL;
-        const bool j_local = c.j < nlocal;
-        if (tally_) tally(c.i, j_local ? c.j : -1, bridge.volume);
-        census_bridge(c.itype, c.jtype, j_local, bridge.volume);
-        // attraction: i towards j (en points from j to i)
+        const bool j_local = !wall && c.j < nlocal;
+        if (wall) {
+          if (counting_) account_.add_bridge(true, bridge.volume);
+          if (tally_) tally(c.i, -1, 2.0 * bridge.volume);  // the grain's end holds it all
+        } else {
+          if (tally_) tally(c.i, j_local ? c.j : -1, bridge.volume);
+          census_bridge(c.itype, c.jtype, j_local, bridge.volume);
+        }
+        // attraction: i towards j or the wall (en points from j or the wall to i)
         for (int k3 = 0; k3 < 3; ++k3) {
           f[c.i][k3] -= capillary * c.en[k3];
           if (j_local) f[c.j][k3] += capillary * c.en[k3];
@@ -601,10 +704,12 @@ namespace ContactModels {
         const double added = receivers.deposit(k, &volume);
         if (!(added > 0.0)) continue;
         const capbridge_liggghts::HeldBridge &b = receivers.bridge(k);
-        const bool j_local = b.j < atom->nlocal;
+        const bool wall = b.j < 0;  // a wall bridge: all its liquid is its grain's
+        const bool j_local = wall || b.j < atom->nlocal;
         if (counting_) account_.add_bridge(j_local, added);
-        if (timing_) timestep_.add_bridge(b.itype, b.jtype, volume);
-        if (tally_) tally(b.i, j_local ? b.j : -1, added, 0.0);  // liquid, no new bridge
+        if (timing_ && !wall) timestep_.add_bridge(b.itype, b.jtype, volume);
+        // liquid, no new bridge
+        if (tally_) tally(b.i, wall || !j_local ? -1 : b.j, wall ? 2.0 * added : added, 0.0);
       }
     }
 
@@ -666,15 +771,54 @@ namespace ContactModels {
     {
       if (status == CB_OK) return;
       char text[512];
-      snprintf(text, sizeof text,
-               "cohesion model capillary: %s failed for particles %d and %d (law %s, radii "
-               "%g and %g m, gap %g m, volume %g m^3): %s",
-               what, atom->tag[i], atom->tag[j], cb_model_name(model_), atom->radius[i],
-               atom->radius[j], gap, volume, cb_status_message(status));
+      if (j < 0)  // a wall (its bridges' candidates: j -1)
+        snprintf(text, sizeof text,
+                 "cohesion model capillary: %s failed for particle %d and a wall (law %s, "
+                 "radius %g m, gap %g m, volume %g m^3): %s",
+                 what, atom->tag[i], cb_model_name(model_), atom->radius[i], gap, volume,
+                 cb_status_message(status));
+      else
+        snprintf(text, sizeof text,
+                 "cohesion model capillary: %s failed for particles %d and %d (law %s, radii "
+                 "%g and %g m, gap %g m, volume %g m^3): %s",
+                 what, atom->tag[i], atom->tag[j], cb_model_name(model_), atom->radius[i],
+                 atom->radius[j], gap, volume, cb_status_message(status));
       fail_one(text);
     }
 
     /* ---------------------------------------------------------------- set-up */
+
+    /* Protocols 1, 2, 3, at every init (before the walls' models connect): fix
+     * capillaryFinish, last in the fix list (made again if a fix came after it), points to
+     * this model; no wall has joined the pass yet. */
+    void make_finish_fix()
+    {
+      nwalls_ = 0;
+      open_ = false;
+      int k = modify->find_fix("capillaryFinish");
+      if (k >= 0 && std::strcmp(modify->fix[k]->style, "capillary/finish") != 0)
+        error->all(FLERR, "cohesion model capillary: fix ID capillaryFinish is taken by a fix "
+                          "of another style; the model needs that ID for its own fix");
+      if (k >= 0 && k != modify->nfix - 1) {
+        modify->delete_fix("capillaryFinish");
+        k = -1;
+      }
+      if (k < 0) {
+        const char *args[3] = {"capillaryFinish", "all", "capillary/finish"};
+        modify->add_fix(3, const_cast<char **>(args));
+        k = modify->nfix - 1;
+      }
+      finish_fix_ = static_cast<FixCapillaryFinish *>(modify->fix[k]);
+      finish_fix_->pass = this;
+    }
+
+    /* A wall's model: the pass of the pair's model under Protocols 1, 2, 3 (NULL: none). */
+    capbridge_liggghts::LiquidPass *pair_pass()
+    {
+      const int k = modify->find_fix("capillaryFinish");
+      if (k < 0 || std::strcmp(modify->fix[k]->style, "capillary/finish") != 0) return NULL;
+      return static_cast<FixCapillaryFinish *>(modify->fix[k])->pass;
+    }
 
     /* the per-atom arrays of the model exist from the pair_style command on, so that dumps
      * and computes defined before the first run can refer to them */
@@ -751,6 +895,9 @@ namespace ContactModels {
     std::vector<double> released_;
     std::vector<capbridge_liggghts::Candidate> candidates_;
     bool updating_;
+    bool open_;        // Protocols 2, 3: an updating pass whose formations are not finished
+    long long nwalls_; // walls whose models joined the pass in this run (attach_wall)
+    FixCapillaryFinish *finish_fix_;  // ends the pass after the walls when nwalls_ > 0
     bool census_;      // this pass is a census pass (setup, re-neighboring)
     bool counting_;    // this pass is a census of the liquid (Protocol 2: setup, re-neighboring)
     bool timing_;      // this pass checks the time step (setup, re-neighboring; until it warned)

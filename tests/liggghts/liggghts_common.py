@@ -221,13 +221,16 @@ def liggghts(env, deck, variables, workdir, ranks=1, log="log.liggghts", screen=
 
 
 def thermo_rows(log_text):
-    """The numeric rows of every thermo block: lists of strings."""
+    """The numeric rows of every thermo block: lists of strings (a warning printed inside a
+    block does not end it)."""
     rows = []
     inside = False
     for line in log_text.splitlines():
         fields = line.split()
         if fields and fields[0] == "Step":
             inside = True
+            continue
+        if inside and fields and fields[0] == "WARNING:":
             continue
         if inside:
             if not fields or not fields[0].lstrip("-").isdigit():

@@ -133,11 +133,17 @@ add_test(NAME liggghts_wet_collision
                  --workdir ${_liggghts_work}/wet_collision)
 # bridges between a grain and a wall (cohesion capillary in fix wall/gran, liquid fixed): a
 # primitive wall and a mesh against the core's sphere-plane pair (capbridge force --plane),
-# through a restart file; a short skin and a liquid protocol refused
+# through a restart file; a short skin and a protocol beside the pair's fixed liquid refused
 add_test(NAME liggghts_wall
          COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/wall.py
                  $<TARGET_FILE:capbridge_cli> ${CAPBRIDGE_LIGGGHTS_ENV}
                  --workdir ${_liggghts_work}/wall)
+# wall bridges under Protocols 2 and 3: the grain's liquid shared with its other new bridges,
+# back at rupture, a Protocol 3 receiver; conserved on 1, 2, 3 ranks and through a restart
+add_test(NAME liggghts_wall_liquid
+         COMMAND ${Python3_EXECUTABLE} ${_liggghts_dir}/wall_liquid.py
+                 $<TARGET_FILE:capbridge_cli> ${CAPBRIDGE_LIGGGHTS_ENV}
+                 --workdir ${_liggghts_work}/wall_liquid)
 # our model headers without a warning at -Wall -Wextra (LIGGGHTS builds them with its flags)
 add_test(NAME liggghts_model_warnings
          COMMAND ${_liggghts_dir}/model_warnings.sh ${CAPBRIDGE_LIGGGHTS_ENV})
@@ -149,4 +155,4 @@ set_tests_properties(liggghts_pulloff liggghts_pulloff_mpi liggghts_wet liggghts
                      liggghts_protocols_restart liggghts_protocol3_receiver
                      liggghts_corrupt_restart liggghts_remove liggghts_remove_later
                      liggghts_viscous liggghts_easo_viscous liggghts_wet_collision
-                     liggghts_wall liggghts_model_warnings PROPERTIES LABELS "liggghts" TIMEOUT 600)
+                     liggghts_wall liggghts_wall_liquid liggghts_model_warnings PROPERTIES LABELS "liggghts" TIMEOUT 600)

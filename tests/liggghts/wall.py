@@ -15,7 +15,8 @@ Both pulls again on 2 ranks: the sphere starts on the boundary of the two ranks'
 and each mesh triangle is owned by one of them.  The table law at the primitive wall against the exact Laplace-Young sphere-plane bridge
 (`capbridge exact --plane`) to 2e-3.  Errors, asserted by message: a
 primitive wall whose neighbor skin is shorter than its bridges' rupture distance (its grain
-list is built with the skin alone), and a wall with a liquid protocol.
+list is built with the skin alone), and a wall under a liquid protocol beside the pair's liquid
+fixed (the protocols at walls: wall_liquid.py).
 
 usage: wall.py CAPBRIDGE LIGGGHTS_ENV [--workdir DIR]
 """
@@ -194,8 +195,9 @@ def main():
     ok = table_against_exact(capbridge, env, workdir) and ok
     ok = refused(env, workdir, "primitive wall with a short skin",
                  "beyond the skin 0.0001 m: a bridged grain would leave the list", skin=1e-4) and ok
-    ok = refused(env, workdir, "wall with liquid protocol2",
-                 "in a fix wall/gran takes liquid fixed", liquid="liquid protocol2") and ok
+    ok = refused(env, workdir, "wall with liquid protocol2 beside the pair's liquid fixed",
+                 "'liquid protocol2' must be the pair_style's liquid, 'liquid fixed'",
+                 liquid="liquid protocol2") and ok
     print("wall bridges: %s (files in %s)" % ("PASS" if ok else "FAIL", workdir))
     return 0 if ok else 1
 

@@ -1,0 +1,53 @@
+/* fix_capillary_finish.h — fix capillary/finish (ID capillaryFinish): the end of the liquid
+ * pass of `cohesion capillary` under Protocols 2 and 3, after the walls.
+ *
+ * Part of capbridge (lammps_pair/liggghts/). Compiled inside LIGGGHTS: C++98 and C++11.
+ *
+ * Made by the pair's model (pair_style gran ... cohesion capillary liquid protocol2|3) at the
+ * init of every run, as the last fix, so that its setup and its pre_final_integrate come
+ * after every fix wall/gran's force pass: there the pair's model finishes the formations of
+ * the step, the pair's and the walls', with the count of both (capbridge_liggghts_pass.h).
+ * Not a command for decks: it takes no arguments and does nothing without the model.
+ */
+#ifdef FIX_CLASS
+
+FixStyle(capillary/finish,FixCapillaryFinish)
+
+#else
+
+#ifndef LMP_FIX_CAPILLARY_FINISH_H
+#define LMP_FIX_CAPILLARY_FINISH_H
+
+#include "capbridge_liggghts_pass.h"
+#include "error.h"
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixCapillaryFinish : public Fix {
+  public:
+    FixCapillaryFinish(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), pass(NULL)
+    {
+        if (narg != 3)
+            error->fix_error(FLERR, this, "takes no arguments (the pair_style's cohesion model "
+                                          "capillary makes it; it is not a command for decks)");
+    }
+
+    int setmask() { return FixConst::PRE_FINAL_INTEGRATE; }
+    void setup(int) { finish(); }
+    void pre_final_integrate() { finish(); }
+
+    // the pair's model, set at its init and cleared when it is deleted (NULL: nothing to do)
+    capbridge_liggghts::LiquidPass *pass;
+
+  private:
+    void finish()
+    {
+        if (pass) pass->finish_deferred();
+    }
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif
