@@ -65,6 +65,7 @@ COHESION_MODEL(COHESION_CAPILLARY,capillary,9)
 #include "cohesion_model_base.h"
 #include "capbridge_liggghts_settings.h"
 #include "capbridge_liggghts_checks.h"
+#include "capbridge_liggghts_formations.h"
 #include "capbridge_liggghts_laws.h"
 #include "capbridge_liggghts_liquid.h"
 #include "capbridge_liggghts_pass.h"
@@ -105,28 +106,14 @@ namespace MODEL_PARAMS
     }
 }
 
-namespace capbridge_liggghts
-{
-    /* A pair (or a grain and a wall: j -1, rb CB_PLANE) that may form a bridge in this pass
-     * under Protocols 2, 3: finished at the end of the pass (finish_formations). */
-    struct Candidate {
-        double *history;
-        int *contact_flags;
-        const cb_law *law;
-        int i, j;
-        int itype, jtype;
-        double ra, rb, gap;
-        double en[3];
-        bool swap;
-    };
-}
 
 namespace LIGGGHTS {
 namespace ContactModels {
 
   template<>
   class CohesionModel<COHESION_CAPILLARY> : public CohesionModelBase,
-                                             public capbridge_liggghts::LiquidPass {
+                                             public capbridge_liggghts::LiquidPass,
+                                             public capbridge_liggghts::FormationSink {
 
   public:
     CohesionModel(LAMMPS * lmp, IContactHistorySetup * hsetup, class ContactModelBase * cmb) :
@@ -143,9 +130,9 @@ namespace ContactModels {
       bridge_volume_(NULL),
       ntypes_(0),
       fix_free_(NULL),
-      fix_formations_(NULL),
       fix_bridged_(NULL),
       fix_count_(NULL),
+      formations_(lmp),
       updating_(false),
       open_(false),
       nwalls_(0),
@@ -259,7 +246,7 @@ namespace ContactModels {
       registry.connect("surfaceTension", surface_tension_, caller);
       registry.connect("contactAngle", contact_angle_, caller);
       // a wall's liquid is the pair_style's: checked before the properties it would need
-      if (wall_) wall_bridges_.connect_liquid(pair_pass(), liquid_);
+      if (wall_) wall_bridges_.connect_liquid(capbridge_liggghts::pair_pass(modify), liquid_);
       if (!per_atom_liquid_) {
         registry.registerProperty("bridgeVolume", &MODEL_PARAMS::createCapillaryBridgeVolume);
         registry.connect("bridgeVolume", bridge_volume_, caller);
@@ -285,7 +272,11 @@ namespace ContactModels {
                              per_atom_liquid_ ? fix_free_->vector_atom : NULL,
                              protocols_.vmax(), history_offset_);
       protocols_.connect(laws_.laws, liquid_);
-      if (per_atom_liquid_) make_finish_fix();
+      if (per_atom_liquid_) {  // (before the walls' models connect, in fix wall/gran's init)
+        nwalls_ = 0;
+        open_ = false;
+        finish_fix_ = capbridge_liggghts::make_finish_fix(modify, error, this);
+      }
     }
 
     /* ------------------------------------------ the pass as the walls see it (LiquidPass) */
@@ -297,31 +288,14 @@ namespace ContactModels {
     bool open() const { return open_; }
     double free_liquid(const int i) const { return fix_free_->vector_atom[i]; }
 
-    void wall_formation(const capbridge_liggghts::WallBridge &b)
-    {
-      fix_formations_->vector_atom[b.i] += 1.0;
-      capbridge_liggghts::Candidate c;
-      c.history = b.history;
-      c.contact_flags = NULL;
-      c.law = b.law;
-      c.i = b.i;
-      c.j = -1;
-      c.itype = b.itype;
-      c.jtype = b.wall_type;
-      c.ra = b.r;
-      c.rb = CB_PLANE;
-      c.gap = b.gap;
-      for (int k = 0; k < 3; ++k) c.en[k] = b.en[k];
-      c.swap = false;
-      candidates_.push_back(c);
-    }
+    void wall_formation(const capbridge_liggghts::WallBridge &b) { formations_.add_wall(b); }
 
     void wall_release(const int i, const double r, const double volume)
     {
       double grain = 0.0, wall = 0.0;  // the wall holds no liquid: all of it to the grain
       check_at(cb_protocol2_release(volume, r, CB_PLANE, &grain, &wall),
                "Protocol 2 release at a wall", i, -1, 0.0, volume);
-      released_[i] += grain;
+      formations_.released[i] += grain;
     }
 
     void wall_held(const capbridge_liggghts::WallBridge &b, const double volume)
@@ -365,10 +339,7 @@ namespace ContactModels {
                             "while walls hold bridges is not supported in LIGGGHTS yet (LAMMPS's "
                             "fix capillary/liquid removes wall bridges too)");
         fix_free_->do_forward_comm();
-        double *nform = fix_formations_->vector_atom;
-        for (int k = 0; k < nall; ++k) nform[k] = 0.0;
-        released_.assign(atom->nlocal > 0 ? atom->nlocal : 1, 0.0);
-        candidates_.clear();
+        formations_.begin();
       }
       if (tally_) {
         double *bridged = fix_bridged_->vector_atom;
@@ -520,7 +491,7 @@ namespace ContactModels {
             if (change == CB_BRIDGE_RUPTURED) release(released, ra, rb, swap, d, gap);
           }
           if (cb_bridge_may_form(&bridge, gap) && !protocols_.protocol1)  // (P1: distributes)
-            offer_formation(d, hist, ra, rb, swap, gap, en);
+            formations_.add_pair(d, hist, law, ra, rb, swap, gap, en, fix_free_->vector_atom);
         }
         std::memcpy(hist, &bridge, sizeof bridge);
       }
@@ -555,35 +526,6 @@ namespace ContactModels {
                          bridge.volume, en, i_forces, j_forces),
             "viscous force", d, gap, bridge.volume);
       return true;
-    }
-
-    /* Protocols 2, 3: a dry pair in contact where either particle has free liquid forms a
-     * bridge; it takes its liquid in endPass, once every rank knows how many bridges form
-     * on each particle in this step (ra, rb in the core's order; swap: i is b). */
-    void offer_formation(const SurfacesCloseData & d, double *hist, const double ra,
-                         const double rb, const bool swap, const double gap, const double *en)
-    {
-      const double *free_liquid = fix_free_->vector_atom;
-      if (!(free_liquid[d.i] + free_liquid[d.j] > 0.0)) return;
-      double *nform = fix_formations_->vector_atom;
-      nform[d.i] += 1.0;
-      if (d.j < atom->nlocal) nform[d.j] += 1.0;
-      capbridge_liggghts::Candidate c;
-      c.history = hist;
-      c.contact_flags = d.contact_flags;
-      c.law = laws_.of(d.itype, d.jtype);
-      c.i = d.i;
-      c.j = d.j;
-      c.itype = d.itype;
-      c.jtype = d.jtype;
-      c.ra = ra;
-      c.rb = rb;
-      c.gap = gap;
-      c.en[0] = en[0];
-      c.en[1] = en[1];
-      c.en[2] = en[2];
-      c.swap = swap;
-      candidates_.push_back(c);
     }
 
     /* keyword remove or fix capillaryRemove, in the pass that removes: counted on one rank, and
@@ -625,72 +567,35 @@ namespace ContactModels {
       double share_a = 0.0, share_b = 0.0;
       check(cb_protocol2_release(volume, ra, rb, &share_a, &share_b), "Protocol 2 release", d,
             gap, volume);
-      released_[d.i] += swap ? share_b : share_a;
-      if (d.j < atom->nlocal) released_[d.j] += swap ? share_a : share_b;
+      formations_.released[d.i] += swap ? share_b : share_a;
+      if (d.j < atom->nlocal) formations_.released[d.j] += swap ? share_a : share_b;
     }
 
-    /* Protocols 2, 3: the part of a particle's free liquid that each of its `formations`
-     * new bridges of this step is offered (the core's k-way share, cb_protocol_grain_step;
-     * the particle's free liquid is cleared after all its bridges took their parts). */
-    double formation_share(const double free_liquid, const double formations,
-                           const capbridge_liggghts::Candidate &c)
-    {
-      double free_after = free_liquid, deposit = 0.0, offer = 0.0;
-      check_at(cb_protocol_grain_step(0.0, 0, formations, &free_after, &deposit, &offer),
-               "Protocol 2 share", c.i, c.j, c.gap, free_liquid);
-      return offer;
-    }
-
-    /* Protocols 2, 3: the bridges that formed in this pass, between grains and at walls
-     * (j -1: the wall holds no liquid), take their liquid. */
+    /* Protocols 2, 3: the bridges that formed in this pass, between grains and at walls,
+     * take their liquid; Protocol 3's receivers the released liquid. */
     void finish_formations()
     {
-      fix_formations_->do_forward_comm();
-      double *free_liquid = fix_free_->vector_atom;
-      const double *nform = fix_formations_->vector_atom;
-      const int nlocal = atom->nlocal;
-      double **f = atom->f;
-      for (size_t k = 0; k < candidates_.size(); ++k) {
-        const capbridge_liggghts::Candidate &c = candidates_[k];
-        const bool wall = c.j < 0;
-        // each of the nform[i] new bridges of particle i takes 1/nform[i] of its liquid
-        double from_i = formation_share(free_liquid[c.i], nform[c.i], c);
-        double from_j = wall ? 0.0 : formation_share(free_liquid[c.j], nform[c.j], c);
-        double volume = 0.0;
-        double *from_a = c.swap ? &from_j : &from_i;
-        double *from_b = c.swap ? &from_i : &from_j;
-        check_at(cb_protocol2_take(from_a, from_b, &volume), "Protocol 2 take", c.i, c.j,
-                 c.gap, volume);
-        cb_bridge bridge;
-        std::memset(&bridge, 0, sizeof bridge);
-        cb_transition change = CB_BRIDGE_STAYS_DRY;
-        double released = 0.0, capillary = 0.0;
-        check_at(cb_bridge_step(c.law, c.ra, c.rb, c.gap, volume, &bridge, &change, &released,
-                                &capillary),
-                 "bridge update", c.i, c.j, c.gap, volume);
-        if (change != CB_BRIDGE_FORMED) continue;
-        std::memcpy(c.history, &bridge, sizeof bridge);
-        if (c.contact_flags) *c.contact_flags |= CONTACT_COHESION_MODEL;
-        const bool j_local = !wall && c.j < nlocal;
-        if (wall) {
-          if (counting_) account_.add_bridge(true, bridge.volume);
-          if (tally_) tally(c.i, -1, 2.0 * bridge.volume);  // the grain's end holds it all
-        } else {
-          if (tally_) tally(c.i, j_local ? c.j : -1, bridge.volume);
-          census_bridge(c.itype, c.jtype, j_local, bridge.volume);
-        }
-        // attraction: i towards j or the wall (en points from j or the wall to i)
-        for (int k3 = 0; k3 < 3; ++k3) {
-          f[c.i][k3] -= capillary * c.en[k3];
-          if (j_local) f[c.j][k3] += capillary * c.en[k3];
-        }
-      }
-      for (int i = 0; i < nlocal; ++i) {
-        if (nform[i] > 0.0) free_liquid[i] = 0.0;
-        if (!protocols_.protocol3) free_liquid[i] += released_[i];
-      }
-      candidates_.clear();
+      formations_.finish(fix_free_->vector_atom, protocols_.protocol3, *this);
       if (protocols_.protocol3) deposit_released();
+    }
+
+    /* FormationSink: a bridge formed at the end of the pass, in the tally and the census */
+    void formed(const capbridge_liggghts::Candidate &c, const double volume)
+    {
+      if (c.j < 0) {  // at a wall: all its liquid is its grain's
+        if (counting_) account_.add_bridge(true, volume);
+        if (tally_) tally(c.i, -1, 2.0 * volume);
+        return;
+      }
+      const bool j_local = c.j < atom->nlocal;
+      if (tally_) tally(c.i, j_local ? c.j : -1, volume);
+      census_bridge(c.itype, c.jtype, j_local, volume);
+    }
+
+    void failed(const cb_status status, const char *what, const int i, const int j,
+                const double gap, const double volume)
+    {
+      check_at(status, what, i, j, gap, volume);
     }
 
     /* Protocol 3: the liquid released in this pass to its receivers (or the free liquid);
@@ -698,7 +603,7 @@ namespace ContactModels {
     void deposit_released()
     {
       capbridge_liggghts::Protocol3 &receivers = protocols_.receivers;
-      receivers.settle(fix_free_->vector_atom, released_);
+      receivers.settle(fix_free_->vector_atom, formations_.released);
       for (size_t k = 0; k < receivers.size(); ++k) {
         double volume = 0.0;  // the bridge grows in its history; this pass counted it before
         const double added = receivers.deposit(k, &volume);
@@ -788,44 +693,11 @@ namespace ContactModels {
 
     /* ---------------------------------------------------------------- set-up */
 
-    /* Protocols 1, 2, 3, at every init (before the walls' models connect): fix
-     * capillaryFinish, last in the fix list (made again if a fix came after it), points to
-     * this model; no wall has joined the pass yet. */
-    void make_finish_fix()
-    {
-      nwalls_ = 0;
-      open_ = false;
-      int k = modify->find_fix("capillaryFinish");
-      if (k >= 0 && std::strcmp(modify->fix[k]->style, "capillary/finish") != 0)
-        error->all(FLERR, "cohesion model capillary: fix ID capillaryFinish is taken by a fix "
-                          "of another style; the model needs that ID for its own fix");
-      if (k >= 0 && k != modify->nfix - 1) {
-        modify->delete_fix("capillaryFinish");
-        k = -1;
-      }
-      if (k < 0) {
-        const char *args[3] = {"capillaryFinish", "all", "capillary/finish"};
-        modify->add_fix(3, const_cast<char **>(args));
-        k = modify->nfix - 1;
-      }
-      finish_fix_ = static_cast<FixCapillaryFinish *>(modify->fix[k]);
-      finish_fix_->pass = this;
-    }
-
-    /* A wall's model: the pass of the pair's model under Protocols 1, 2, 3 (NULL: none). */
-    capbridge_liggghts::LiquidPass *pair_pass()
-    {
-      const int k = modify->find_fix("capillaryFinish");
-      if (k < 0 || std::strcmp(modify->fix[k]->style, "capillary/finish") != 0) return NULL;
-      return static_cast<FixCapillaryFinish *>(modify->fix[k])->pass;
-    }
-
     /* the per-atom arrays of the model exist from the pair_style command on, so that dumps
      * and computes defined before the first run can refer to them */
     void connect_internal_fixes()
     {
-      if (per_atom_liquid_)
-        fix_formations_ = capbridge_liggghts::internal_fix(modify, "capillaryFormations", "yes");
+      if (per_atom_liquid_) formations_.connect();
       if (tally_) {
         fix_bridged_ = capbridge_liggghts::internal_fix(modify, "bridgedLiquid", "no");
         fix_count_ = capbridge_liggghts::internal_fix(modify, "bridgeCount", "no");
@@ -891,9 +763,8 @@ namespace ContactModels {
     // laws: one per distinct contact angle
     capbridge_liggghts::PairLaws laws_;
     // per-atom data
-    FixPropertyAtom *fix_free_, *fix_formations_, *fix_bridged_, *fix_count_;
-    std::vector<double> released_;
-    std::vector<capbridge_liggghts::Candidate> candidates_;
+    FixPropertyAtom *fix_free_, *fix_bridged_, *fix_count_;
+    capbridge_liggghts::Formations formations_;  // Protocols 2, 3: this pass's new bridges
     bool updating_;
     bool open_;        // Protocols 2, 3: an updating pass whose formations are not finished
     long long nwalls_; // walls whose models joined the pass in this run (attach_wall)

@@ -21,6 +21,9 @@ FixStyle(capillary/finish,FixCapillaryFinish)
 #include "capbridge_liggghts_pass.h"
 #include "error.h"
 #include "fix.h"
+#include "modify.h"
+
+#include <cstring>
 
 namespace LAMMPS_NS {
 
@@ -48,6 +51,42 @@ class FixCapillaryFinish : public Fix {
 };
 
 }  // namespace LAMMPS_NS
+
+namespace capbridge_liggghts {
+
+/* The pair's model under Protocols 1, 2, 3, at every init: fix capillaryFinish, last in the
+ * fix list (made again if a fix came after it), pointing to the model's pass. */
+inline LAMMPS_NS::FixCapillaryFinish *make_finish_fix(LAMMPS_NS::Modify *modify,
+                                                      LAMMPS_NS::Error *error, LiquidPass *pass)
+{
+    int k = modify->find_fix("capillaryFinish");
+    if (k >= 0 && std::strcmp(modify->fix[k]->style, "capillary/finish") != 0)
+        error->all(FLERR, "cohesion model capillary: fix ID capillaryFinish is taken by a fix "
+                          "of another style; the model needs that ID for its own fix");
+    if (k >= 0 && k != modify->nfix - 1) {
+        modify->delete_fix("capillaryFinish");
+        k = -1;
+    }
+    if (k < 0) {
+        const char *args[3] = {"capillaryFinish", "all", "capillary/finish"};
+        modify->add_fix(3, const_cast<char **>(args));
+        k = modify->nfix - 1;
+    }
+    LAMMPS_NS::FixCapillaryFinish *fix =
+        static_cast<LAMMPS_NS::FixCapillaryFinish *>(modify->fix[k]);
+    fix->pass = pass;
+    return fix;
+}
+
+/* A wall's model: the pass of the pair's model under Protocols 1, 2, 3 (NULL: none). */
+inline LiquidPass *pair_pass(LAMMPS_NS::Modify *modify)
+{
+    const int k = modify->find_fix("capillaryFinish");
+    if (k < 0 || std::strcmp(modify->fix[k]->style, "capillary/finish") != 0) return NULL;
+    return static_cast<LAMMPS_NS::FixCapillaryFinish *>(modify->fix[k])->pass;
+}
+
+}  // namespace capbridge_liggghts
 
 #endif
 #endif
