@@ -15,7 +15,10 @@ then asserts the physics:
     liquid of the sample (summary.txt liquid_total) is w/100 of the grain mass M over the
     water density, M = 2500 kg/m^3 x the spheres' volume from start.dump, to 1e-9 relative;
   - the bridges exist (bridge coordination z between 2 and 12 at the start of the compression);
-  - half of the bridges removed: z between 0.35 and 0.65 of the full sample's z.
+  - half of the bridges removed: z between 0.35 and 0.65 of the full sample's z;
+  - LIGGGHTS, the wet bottom plate (Protocol 3, start free, plate wet: the floor's bridges under
+    the pair's protocol): the plate holds bridges (> 10) at the compression's start, the liquid
+    is conserved to 1e-12 with them, the strength is a wet sample's.
 Numpy only; standard library otherwise.
 """
 import math
@@ -128,6 +131,19 @@ def main():
         s_half = strength(half_curve)
         check(s_half > 10 * max(s_dry, 0.0) and s_half > 0.1 * SIGMA_CAP,
               f"protocol3, half the bridges: strength {s_half:.4g} Pa well above dry")
+
+    if engine == "liggghts":
+        plate, plate_curve = run(engine, workdir, "plate_wet", ("protocol", "protocol3"),
+                                 ("start", "free"), ("plate", "wet"), ("w", w))
+        check_water("protocol3, wet plate", plate, os.path.join(workdir, "plate_wet"))
+        bridges = int(float(plate.get("plate_bridges", 0)))
+        check(bridges > 10, f"wet plate: {bridges} plate bridges at the compression's start > 10")
+        check(np.all(np.abs(plate_curve[:, 6]) < 1e-12),
+              f"protocol3, wet plate: liquid conserved, max |relative change| "
+              f"{np.max(np.abs(plate_curve[:, 6])):.3g} < 1e-12")
+        s_plate = strength(plate_curve)
+        check(s_plate > 0.2 * SIGMA_CAP,
+              f"wet plate: strength {s_plate:.4g} Pa > 0.2 x capillary scale {SIGMA_CAP:.4g} Pa")
 
     if failures:
         sys.exit(f"uniaxial_smoke ({engine}): {len(failures)} checks failed")
