@@ -1,5 +1,6 @@
-/* capbridge_liggghts_pass.h — the liquid pass of `cohesion capillary` under Protocols 2 and 3
- * as the walls see it: what a model in a fix wall/gran asks of the pair's model.
+/* capbridge_liggghts_pass.h — the pair's `cohesion capillary` as the walls see it: what a
+ * model in a fix wall/gran asks of the pair's model (its liquid, its tally; under Protocols 2
+ * and 3 its liquid pass).
  *
  * Part of capbridge (lammps_pair/liggghts/). Compiled inside LIGGGHTS: C++98 and C++11.
  *
@@ -50,7 +51,8 @@ class LiquidPass {
     virtual void wall_formation(const WallBridge &b) = 0;
     /* The liquid of a wall bridge of grain i that broke in this step. */
     virtual void wall_release(const int i, const double r, const double volume) = 0;
-    /* A wall bridge that exists after this step's transitions. */
+    /* A wall bridge that exists after this step's transitions (any liquid: the tally; under
+     * the protocols the census and Protocol 3's receivers too). */
     virtual void wall_held(const WallBridge &b, const double volume) = 0;
     /* fix capillaryFinish: the end of the pass, after every wall. */
     virtual void finish_deferred() = 0;

@@ -61,7 +61,7 @@ namespace capbridge_liggghts {
 class WallBridges : protected LAMMPS_NS::Pointers {
   public:
     explicit WallBridges(LAMMPS_NS::LAMMPS *lmp)
-        : Pointers(lmp), wall_(NULL), history_offset_(-1), ntypes_(0), pass_(NULL), key_(0),
+        : Pointers(lmp), wall_(NULL), history_offset_(-1), ntypes_(0), pass_(NULL), protocol_(false), key_(0),
           warned_beyond_(false)
     {
     }
@@ -106,7 +106,7 @@ class WallBridges : protected LAMMPS_NS::Pointers {
             const int wall_type = wall_types[w];
             for (int a = 1; a <= ntypes_; ++a) {
                 const double volume =
-                    pass_ ? pass_->design_volume() : bridge_volume[a][wall_type];
+                    protocol_ ? pass_->design_volume() : bridge_volume[a][wall_type];
                 double rupture = 0.0, pair_ratio = 0.0;
                 const cb_status status = cb_reach(laws.of(a, wall_type), radii, plane, volume,
                                                   &rupture, NULL, &pair_ratio);
@@ -136,9 +136,9 @@ class WallBridges : protected LAMMPS_NS::Pointers {
                      "bridges (%s with the wall's type %d) rupture up to %g m from it, beyond "
                      "the skin %g m: a bridged grain would leave the list with its bridge.  "
                      "Give 'neighbor %s bin' or more%s",
-                     wall_->id, pass_ ? "the pair_style's design volume" : "bridgeVolume",
+                     wall_->id, protocol_ ? "the pair_style's design volume" : "bridgeVolume",
                      largest_type, largest, neighbor->skin, format_at_least(needed).c_str(),
-                     pass_ ? "" : " (or a mesh wall)");
+                     protocol_ ? "" : " (or a mesh wall)");
             error->all(FLERR, text);
         }
     }
@@ -150,7 +150,7 @@ class WallBridges : protected LAMMPS_NS::Pointers {
                  const double gap, const double volume, const double *en)
     {
         if (!d.contact_history) fail("no contact history for a wall contact (internal)");
-        if (pass_) return protocol_force(law, d, gap, en);
+        if (protocol_) return protocol_force(law, d, gap, en);
         double *const hist = &d.contact_history[history_offset_];
         cb_bridge bridge;
         std::memcpy(&bridge, hist, sizeof bridge);
@@ -176,30 +176,36 @@ class WallBridges : protected LAMMPS_NS::Pointers {
             std::memcpy(hist, &bridge, sizeof bridge);
         }
         if (bridge.active == 0.0) return 0.0;
+        if (updating && pass_) {  // the pair's tally (bridgedLiquid, bridgeCount)
+            const WallBridge b = {hist, law, d.i, d.itype, d.jtype, key_, r, gap,
+                                  {en[0], en[1], en[2]}};
+            pass_->wall_held(b, bridge.volume);
+        }
         if (!have_force)
             check(cb_bridge_force(law, r, CB_PLANE, gap, &bridge, &capillary), "force", d, gap,
                   bridge.volume);
         return capillary;
     }
 
-    /* At the init of every run, first: the liquid of the wall's bridges is the pair_style's,
-     * fixed (no pass: pair_pass() NULL), or the pair's Protocol 2 or 3, whose pass this wall
-     * joins. */
+    /* At the init of every run, first: the liquid of the wall's bridges is the pair_style's
+     * (pass: the pair's model, NULL when the pair_style has no cohesion capillary), fixed or
+     * its Protocol 2 or 3, whose pass this wall then joins. */
     void connect_liquid(LiquidPass *pass, const std::string &liquid)
     {
         if (!wall_) error->all(FLERR, "cohesion model capillary: a wall model outside fix "
                                       "wall/gran (internal)");
-        pass_ = NULL;
+        pass_ = pass;
+        protocol_ = false;
         const std::string pair = pass ? pass->liquid() : "fixed";
         if (liquid != pair) {
             const std::string text =
                 std::string("cohesion model capillary in fix ") + wall_->id + ": 'liquid " +
                 liquid + "' must be the pair_style's liquid, 'liquid " + pair +
                 "' (the grains and the walls share one liquid: " +
-                (pass ? "fixed-volume wall bridges beside the protocols would make and destroy "
-                        "the liquid they conserve)"
-                      : "the protocols need pair_style gran with cohesion capillary under the "
-                        "same liquid)");
+                (liquid == "fixed" ? "fixed-volume wall bridges beside the protocols would "
+                                     "make and destroy the liquid they conserve)"
+                                   : "the protocols need pair_style gran with cohesion "
+                                     "capillary under the same liquid)");
             error->all(FLERR, text.c_str());
         }
         if (liquid == "fixed") return;
@@ -220,7 +226,7 @@ class WallBridges : protected LAMMPS_NS::Pointers {
                 "known: give the pair_style 'start free' (the bridges then form at contact)";
             error->all(FLERR, text.c_str());
         }
-        pass_ = pass;
+        protocol_ = true;
         key_ = pass_->attach_wall();
     }
 
@@ -324,7 +330,8 @@ class WallBridges : protected LAMMPS_NS::Pointers {
     int history_offset_;
     int ntypes_;
     std::vector<double> design_rupture_;  // per pair of types, [grain * (ntypes + 1) + wall]
-    LiquidPass *pass_;                    // Protocols 2, 3: the pair's pass; NULL: liquid fixed
+    LiquidPass *pass_;                    // the pair's model (NULL: no cohesion capillary)
+    bool protocol_;                       // Protocols 2, 3: the wall joins the pair's pass
     long long key_;                       // this wall's key in the pass (negative)
     bool warned_beyond_;
 };

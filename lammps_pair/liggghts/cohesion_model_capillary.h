@@ -272,11 +272,11 @@ namespace ContactModels {
                              per_atom_liquid_ ? fix_free_->vector_atom : NULL,
                              protocols_.vmax(), history_offset_);
       protocols_.connect(laws_.laws, liquid_);
-      if (per_atom_liquid_) {  // (before the walls' models connect, in fix wall/gran's init)
-        nwalls_ = 0;
-        open_ = false;
-        finish_fix_ = capbridge_liggghts::make_finish_fix(modify, error, this);
-      }
+      // (before the walls' models connect, in fix wall/gran's init: they find this model
+      // through the fix, for its liquid, its tally, and under Protocols 2, 3 its pass)
+      nwalls_ = 0;
+      open_ = false;
+      finish_fix_ = capbridge_liggghts::make_finish_fix(modify, error, this);
     }
 
     /* ------------------------------------------ the pass as the walls see it (LiquidPass) */

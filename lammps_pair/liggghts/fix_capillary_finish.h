@@ -1,12 +1,15 @@
-/* fix_capillary_finish.h — fix capillary/finish (ID capillaryFinish): the end of the liquid
- * pass of `cohesion capillary` under Protocols 2 and 3, after the walls.
+/* fix_capillary_finish.h — fix capillary/finish (ID capillaryFinish): where the walls' models
+ * of `cohesion capillary` find the pair's, and under Protocols 2 and 3 the end of the pair's
+ * liquid pass, after the walls.
  *
  * Part of capbridge (lammps_pair/liggghts/). Compiled inside LIGGGHTS: C++98 and C++11.
  *
- * Made by the pair's model (pair_style gran ... cohesion capillary liquid protocol2|3) at the
- * init of every run, as the last fix, so that its setup and its pre_final_integrate come
- * after every fix wall/gran's force pass: there the pair's model finishes the formations of
- * the step, the pair's and the walls', with the count of both (capbridge_liggghts_pass.h).
+ * Made by the pair's model (pair_style gran ... cohesion capillary) at the init of every run,
+ * before the walls' models connect, as the last fix: a wall's model reads the pair's liquid
+ * and tally through it, and under Protocols 2 and 3, where its setup and its
+ * pre_final_integrate come after every fix wall/gran's force pass, the pair's model finishes
+ * there the formations of the step, the pair's and the walls', with the count of both
+ * (capbridge_liggghts_pass.h).
  * Not a command for decks: it takes no arguments and does nothing without the model.
  */
 #ifdef FIX_CLASS
@@ -54,8 +57,8 @@ class FixCapillaryFinish : public Fix {
 
 namespace capbridge_liggghts {
 
-/* The pair's model under Protocols 1, 2, 3, at every init: fix capillaryFinish, last in the
- * fix list (made again if a fix came after it), pointing to the model's pass. */
+/* The pair's model, at every init: fix capillaryFinish, last in the fix list (made again if a
+ * fix came after it), pointing to the model's pass. */
 inline LAMMPS_NS::FixCapillaryFinish *make_finish_fix(LAMMPS_NS::Modify *modify,
                                                       LAMMPS_NS::Error *error, LiquidPass *pass)
 {
@@ -78,7 +81,8 @@ inline LAMMPS_NS::FixCapillaryFinish *make_finish_fix(LAMMPS_NS::Modify *modify,
     return fix;
 }
 
-/* A wall's model: the pass of the pair's model under Protocols 1, 2, 3 (NULL: none). */
+/* A wall's model: the pass of the pair's model (NULL: the pair_style has no cohesion
+ * capillary). */
 inline LiquidPass *pair_pass(LAMMPS_NS::Modify *modify)
 {
     const int k = modify->find_fix("capillaryFinish");

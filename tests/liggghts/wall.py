@@ -12,7 +12,8 @@ none once the gap passes `capbridge rupture LAW --plane`.  Each pull again in tw
 a restart file written at step 2000 with the bridge stretched: every step after it as the
 continuous run's, to 1e-12 (the bridge kept in the wall's history, per grain or per triangle).
 Both pulls again on 2 ranks: the sphere starts on the boundary of the two ranks' domains (x = 0)
-and each mesh triangle is owned by one of them.  The table law at the primitive wall against the exact Laplace-Young sphere-plane bridge
+and each mesh triangle is owned by one of them.  The pair_style's tally on counts the wall bridge (all its liquid, one end).  The table law at the
+primitive wall against the exact Laplace-Young sphere-plane bridge
 (`capbridge exact --plane`) to 2e-3.  Errors, asserted by message: a
 primitive wall whose neighbor skin is shorter than its bridges' rupture distance (its grain
 list is built with the skin alone), and a wall under a liquid protocol beside the pair's liquid
@@ -168,6 +169,27 @@ def restarted(env, workdir, mesh, name, continuous):
     return ok
 
 
+def tallied(env, workdir, mesh):
+    """The pair_style's tally on counts the wall's bridge, its grain's: all of its liquid in
+    bridgedLiquid and one end in bridgeCount while it holds, nothing once it has broken."""
+    name = ("mesh" if mesh else "primitive") + " wall, tally"
+    code, log = lc.liggghts(env, os.path.join(lc.HERE, "in.wall"),
+                            deck_variables(workdir, mesh, tally=1), workdir,
+                            log="log." + name.replace(", ", "-").replace(" ", ""),
+                            screen="screen." + name.replace(", ", "-").replace(" ", ""))
+    if code != 0:
+        lc.fail("in.wall (%s): %s" % (name, lc.error_line(log) or log[-1500:]))
+    rows = [[float(v) for v in row] for row in lc.thermo_rows(log) if len(row) == 5]
+    held = [r for r in rows if r[2] != 0.0]
+    gone = [r for r in rows if r[2] == 0.0 and r[1] > RUN["r"]]
+    ok = len(held) > 100 and len(gone) > 100 and \
+        all(r[3] == RUN["volume"] and r[4] == 1.0 for r in held) and \
+        all(r[3] == 0.0 and r[4] == 0.0 for r in gone)
+    print("%s: bridgedLiquid %g m^3 and bridgeCount 1 at the %d steps with a force, 0 at the %d "
+          "after %s" % (name, RUN["volume"], len(held), len(gone), "ok" if ok else "FAIL"))
+    return ok
+
+
 def refused(env, workdir, name, expected, **changes):
     code, log = lc.liggghts(env, os.path.join(lc.HERE, "in.wall"),
                             deck_variables(workdir, 0, nsteps=10, **changes), workdir,
@@ -193,6 +215,8 @@ def main():
     ok = pull(capbridge, env, workdir, 0, rupture, ranks=2) and ok
     ok = pull(capbridge, env, workdir, 1, rupture, ranks=2) and ok
     ok = table_against_exact(capbridge, env, workdir) and ok
+    ok = tallied(env, workdir, 0) and ok
+    ok = tallied(env, workdir, 1) and ok
     ok = refused(env, workdir, "primitive wall with a short skin",
                  "beyond the skin 0.0001 m: a bridged grain would leave the list", skin=1e-4) and ok
     ok = refused(env, workdir, "wall with liquid protocol2 beside the pair's liquid fixed",
