@@ -301,7 +301,7 @@ namespace ContactModels {
     void wall_held(const capbridge_liggghts::WallBridge &b, const double volume)
     {
       if (counting_) account_.add_bridge(true, volume);  // all of it: its one grain's
-      if (tally_) tally(b.i, -1, 2.0 * volume);          // the grain's end holds it all
+      if (tally_) tally_wall(b.i, volume, 1.0);
       if (protocols_.protocol3) protocols_.receivers.offer_wall(b);
     }
 
@@ -584,7 +584,7 @@ namespace ContactModels {
     {
       if (c.j < 0) {  // at a wall: all its liquid is its grain's
         if (counting_) account_.add_bridge(true, volume);
-        if (tally_) tally(c.i, -1, 2.0 * volume);
+        if (tally_) tally_wall(c.i, volume, 1.0);
         return;
       }
       const bool j_local = c.j < atom->nlocal;
@@ -613,8 +613,8 @@ namespace ContactModels {
         const bool j_local = wall || b.j < atom->nlocal;
         if (counting_) account_.add_bridge(j_local, added);
         if (timing_ && !wall) timestep_.add_bridge(b.itype, b.jtype, volume);
-        // liquid, no new bridge
-        if (tally_) tally(b.i, wall || !j_local ? -1 : b.j, wall ? 2.0 * added : added, 0.0);
+        if (tally_ && wall) tally_wall(b.i, added, 0.0);  // liquid, no new bridge
+        else if (tally_) tally(b.i, j_local ? b.j : -1, added, 0.0);
       }
     }
 
@@ -644,6 +644,13 @@ namespace ContactModels {
         bridged[j] += 0.5 * volume;
         count[j] += ends;
       }
+    }
+
+    /* A wall bridge in the per-atom output: all its liquid is its grain's, one end. */
+    void tally_wall(const int i, const double volume, const double ends)
+    {
+      fix_bridged_->vector_atom[i] += volume;
+      fix_count_->vector_atom[i] += ends;
     }
 
     /* ---------------------------------------------------------------- errors */
