@@ -3,12 +3,13 @@
 the band cells by pressure and by inertial number, and the line tau = mu p + c over the band
 cells below a height (issue 18: the dry intercept).
 
-Usage: inputs/split_bottom/stress_ratio.py D POSTDIR [RUN ...]
-D: the grain diameter [m] (4.762e-3 at the default and large sizes); POSTDIR: post.py's output
+Usage: inputs/split_bottom/stress_ratio.py D RHO POSTDIR [RUN ...]
+D: the grain diameter [m] and RHO their density [kg/m^3] (params.in: 4.762e-3 and 150, as
+Gladkyy section 4.1, at every size); POSTDIR: post.py's output
 directory, whose <run>_stress.csv give p, tau and the shear rate per (r, z) cell and whether it
 is in the band; RUN: the runs to read (default: every <run>_stress.csv there).  Prints, over the
 band cells of all runs, tau/p per pressure bin and per bin of I = shear rate d / sqrt(p / rho)
-(rho = 2500 kg/m^3, the grains' density: the inertial number of GDR MiDi 2004), and per run
+(the inertial number of GDR MiDi 2004, as post.py's), and per run
 the least-squares line through the band cells at z <= zmax for a few zmax (mu +- s.e., c +-
 s.e.).
 """
@@ -17,8 +18,6 @@ import os
 import sys
 
 import numpy as np
-
-RHO = 2500.0
 
 
 def band_cells(path):
@@ -36,15 +35,15 @@ def line(p, tau):
 
 
 def main(argv):
-    if len(argv) < 3:
+    if len(argv) < 4:
         sys.exit(__doc__)
-    d, post = float(argv[1]), argv[2]
-    paths = ([os.path.join(post, run + "_stress.csv") for run in argv[3:]] or
+    d, rho, post = float(argv[1]), float(argv[2]), argv[3]
+    paths = ([os.path.join(post, run + "_stress.csv") for run in argv[4:]] or
              sorted(glob.glob(os.path.join(post, "*_stress.csv"))))
     cells = {os.path.basename(p)[:-len("_stress.csv")]: band_cells(p) for p in paths}
     allc = np.vstack(list(cells.values()))
     z, p, tau, rate = allc[:, 1], allc[:, 2], allc[:, 3], allc[:, 4]
-    ratio, inertial = tau / p, rate * d / np.sqrt(p / RHO)
+    ratio, inertial = tau / p, rate * d / np.sqrt(p / rho)
     print("| p [Pa] | cells | tau/p (mean +- s.e.) | I (median) | z/d (median) |")
     print("|---|---|---|---|---|")
     for lo, hi in ((0, 5), (5, 10), (10, 15), (15, 20), (20, 1e9)):
@@ -57,7 +56,7 @@ def main(argv):
     print()
     print("| I | cells | tau/p (mean +- s.e.) | p [Pa] (median) |")
     print("|---|---|---|---|")
-    for lo, hi in ((0, 0.01), (0.01, 0.02), (0.02, 0.05), (0.05, 1e9)):
+    for lo, hi in ((0, 0.0025), (0.0025, 0.005), (0.005, 0.01), (0.01, 1e9)):
         s = (inertial >= lo) & (inertial < hi)
         if s.sum() > 1:
             print("| %s | %d | %.3f +- %.3f | %.1f |"
