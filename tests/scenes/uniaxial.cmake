@@ -32,6 +32,9 @@ foreach(engine lammps liggghts)
     "uniaxial: w = 20 %: w is the water content in percent of the grain mass, allowed 0.2 <= w < 20")
   uniaxial_refusal(${engine} seed seed 2.5 "uniaxial: seed must be a .*, not 2.5")
 endforeach()
+# start free is Protocols 2 and 3's (Protocol 1 distributes the liquid anyway)
+uniaxial_refusal(lammps start_protocol1 start free
+  "uniaxial: start free needs protocol2 or protocol3, not protocol1")
 # LIGGGHTS's wet plate needs protocol2 or protocol3 with start free (no Protocol 1 at its walls)
 uniaxial_refusal(liggghts plate_protocol1 plate wet
   "plate wet \\(dry; wet with protocol2 or protocol3, start free, not dry yes\\): a Label-not-found error right after this line means a value not allowed[\r\n]+ERROR: Label wasn't found")
