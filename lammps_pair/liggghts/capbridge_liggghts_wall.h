@@ -144,43 +144,49 @@ class WallBridges : protected LAMMPS_NS::Pointers {
     }
 
     /* The bridge of grain d.i and the wall in one call: its transition (in real force passes,
-     * d.computeflag) and its force on the grain; volume is bridgeVolume of the two types
-     * (liquid fixed), en the unit normal from the wall to the grain. */
+     * d.computeflag; under Protocols 2, 3 in the pair's open pass) and its force on the grain;
+     * en the unit normal from the wall to the grain.  volume: bridgeVolume of the two types
+     * with liquid fixed (a bridge forms at contact here); 0 under the protocols, where a
+     * formation is the pair's model's, at the end of the pass (wall_formation). */
     double force(const cb_law *law, LIGGGHTS::ContactModels::SurfacesCloseData &d,
                  const double gap, const double volume, const double *en)
     {
         if (!d.contact_history) fail("no contact history for a wall contact (internal)");
-        if (protocol_) return protocol_force(law, d, gap, en);
         double *const hist = &d.contact_history[history_offset_];
         cb_bridge bridge;
         std::memcpy(&bridge, hist, sizeof bridge);
-        const bool updating = d.computeflag != 0;
+        const bool updating = d.computeflag != 0 && (!protocol_ || pass_->open());
         const double r = d.radi;
         if (updating && update->setupflag) setup_state(law, d, gap, bridge, hist);
         double capillary = 0.0;
         bool have_force = false;
         if (updating && cb_bridge_held(law, r, CB_PLANE, gap, &bridge, &capillary)) {
             have_force = true;  // held in contact: its stored force
-        } else if (updating && (!cb_bridge_dry(&bridge) || gap <= 0.0)) {
+        } else if (updating && (!cb_bridge_dry(&bridge) || (!protocol_ && gap <= 0.0))) {
             cb_transition change = CB_BRIDGE_STAYS_DRY;
             double released = 0.0;  // liquid fixed: a broken bridge's liquid leaves
             check(cb_bridge_step(law, r, CB_PLANE, gap, volume, &bridge, &change, &released,
-                                 &capillary), "bridge update", d, gap, volume);
+                                 &capillary), "bridge update", d, gap,
+                  volume > 0.0 ? volume : bridge.volume);
             have_force = true;
             std::memcpy(hist, &bridge, sizeof bridge);
+            if (protocol_ && change == CB_BRIDGE_RUPTURED) pass_->wall_release(d.i, r, released);
         }
+        const WallBridge b = {hist, law, d.i, d.itype, d.jtype, key_, r, gap,
+                              {en[0], en[1], en[2]}};
+        if (protocol_ && updating && bridge.active == 0.0 && cb_bridge_may_form(&bridge, gap) &&
+            pass_->free_liquid(d.i) > 0.0)
+            pass_->wall_formation(b);
         if (updating && bridge.active != 0.0 &&
             cb_bridge_beyond_reach(gap, design_rupture_[d.itype * (ntypes_ + 1) + d.jtype])) {
             rupture_beyond_reach(d, gap, bridge.volume);
+            if (protocol_) pass_->wall_release(d.i, r, bridge.volume);
             std::memset(&bridge, 0, sizeof bridge);
             std::memcpy(hist, &bridge, sizeof bridge);
         }
         if (bridge.active == 0.0) return 0.0;
-        if (updating && pass_) {  // the pair's tally (bridgedLiquid, bridgeCount)
-            const WallBridge b = {hist, law, d.i, d.itype, d.jtype, key_, r, gap,
-                                  {en[0], en[1], en[2]}};
-            pass_->wall_held(b, bridge.volume);
-        }
+        // the pair's tally (any liquid), census and Protocol 3's receivers (protocols)
+        if (updating && pass_) pass_->wall_held(b, bridge.volume);
         if (!have_force)
             check(cb_bridge_force(law, r, CB_PLANE, gap, &bridge, &capillary), "force", d, gap,
                   bridge.volume);
@@ -231,50 +237,6 @@ class WallBridges : protected LAMMPS_NS::Pointers {
     }
 
   private:
-    /* Protocols 2, 3: the bridge of grain d.i and the wall, its transition in the pair's open
-     * pass (formations are the pair's model's, at the end of the pass), its force. */
-    double protocol_force(const cb_law *law, LIGGGHTS::ContactModels::SurfacesCloseData &d,
-                          const double gap, const double *en)
-    {
-        double *const hist = &d.contact_history[history_offset_];
-        cb_bridge bridge;
-        std::memcpy(&bridge, hist, sizeof bridge);
-        const bool updating = d.computeflag != 0 && pass_->open();
-        const double r = d.radi;
-        if (updating && update->setupflag) setup_state(law, d, gap, bridge, hist);
-        double capillary = 0.0;
-        bool have_force = false;
-        if (updating && cb_bridge_held(law, r, CB_PLANE, gap, &bridge, &capillary)) {
-            have_force = true;  // held in contact: its stored force
-        } else if (updating && !cb_bridge_dry(&bridge)) {
-            cb_transition change = CB_BRIDGE_HELD;
-            double released = 0.0;
-            check(cb_bridge_step(law, r, CB_PLANE, gap, 0.0, &bridge, &change, &released,
-                                 &capillary), "bridge update", d, gap, bridge.volume);
-            have_force = true;
-            std::memcpy(hist, &bridge, sizeof bridge);
-            if (change == CB_BRIDGE_RUPTURED) pass_->wall_release(d.i, r, released);
-        }
-        const WallBridge b = {hist, law, d.i, d.itype, d.jtype, key_, r, gap,
-                              {en[0], en[1], en[2]}};
-        if (updating && bridge.active == 0.0 && cb_bridge_may_form(&bridge, gap) &&
-            pass_->free_liquid(d.i) > 0.0)
-            pass_->wall_formation(b);
-        if (updating && bridge.active != 0.0 &&
-            cb_bridge_beyond_reach(gap, design_rupture_[d.itype * (ntypes_ + 1) + d.jtype])) {
-            rupture_beyond_reach(d, gap, bridge.volume);
-            pass_->wall_release(d.i, r, bridge.volume);
-            std::memset(&bridge, 0, sizeof bridge);
-            std::memcpy(hist, &bridge, sizeof bridge);
-        }
-        if (bridge.active == 0.0) return 0.0;
-        if (updating) pass_->wall_held(b, bridge.volume);
-        if (!have_force)
-            check(cb_bridge_force(law, r, CB_PLANE, gap, &bridge, &capillary), "force", d, gap,
-                  bridge.volume);
-        return capillary;
-    }
-
     /* every state checked once where it enters (a restart file's), its constants derived */
     void setup_state(const cb_law *law, const LIGGGHTS::ContactModels::SurfacesCloseData &d,
                      const double gap, cb_bridge &bridge, double *hist)

@@ -245,3 +245,17 @@ def error_line(log_text):
         if "ERROR" in line:
             return line.strip()
     return None
+
+
+def write_plane_stl(path):
+    """The square |x|, |y| <= 5 mm of z = 0 as two triangles sharing the diagonal x = y (an STL
+    file for fix mesh/surface: the mesh wall of wall.py and wall_liquid.py)."""
+    a = 5e-3
+    with open(path, "w") as f:
+        f.write("solid plane\n")
+        for tri in (((-a, -a), (a, -a), (a, a)), ((-a, -a), (a, a), (-a, a))):
+            f.write(" facet normal 0 0 1\n  outer loop\n")
+            for x, y in tri:
+                f.write("   vertex %r %r 0\n" % (x, y))
+            f.write("  endloop\n endfacet\n")
+        f.write("endsolid plane\n")

@@ -52,19 +52,6 @@ def cli(capbridge, command, *extra, law=RUN["law"]):
     return [float(v) for v in lines[1].split(",")]
 
 
-def write_stl(path):
-    """The square |x|, |y| <= 5 mm of z = 0 as two triangles sharing the diagonal x = y."""
-    a = 5e-3
-    with open(path, "w") as f:
-        f.write("solid plane\n")
-        for tri in (((-a, -a), (a, -a), (a, a)), ((-a, -a), (a, a), (-a, a))):
-            f.write(" facet normal 0 0 1\n  outer loop\n")
-            for x, y in tri:
-                f.write("   vertex %r %r 0\n" % (x, y))
-            f.write("  endloop\n endfacet\n")
-        f.write("endsolid plane\n")
-
-
 def deck_variables(workdir, mesh, **changes):
     run = dict(RUN, **changes)
     return [("mesh", mesh), ("stl", os.path.join(workdir, "plane.stl")),
@@ -208,7 +195,7 @@ def main():
     args = parser.parse_args()
     env, workdir = lc.start(args.env, args.workdir, "wall")
     capbridge = os.path.abspath(args.capbridge)
-    write_stl(os.path.join(workdir, "plane.stl"))
+    lc.write_plane_stl(os.path.join(workdir, "plane.stl"))
     rupture = cli(capbridge, "rupture")[0]
     ok = pull(capbridge, env, workdir, 0, rupture)
     ok = pull(capbridge, env, workdir, 1, rupture) and ok

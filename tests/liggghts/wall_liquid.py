@@ -220,15 +220,7 @@ def refused(env, workdir, name, expected, **changes):
 
 def refusals(env, workdir):
     stl = os.path.join(workdir, "plane.stl")
-    with open(stl, "w") as f:  # the square |x|, |y| <= 5 mm of z = 0 as two triangles
-        f.write("solid plane\n")
-        for tri in (((-5e-3, -5e-3), (5e-3, -5e-3), (5e-3, 5e-3)),
-                    ((-5e-3, -5e-3), (5e-3, 5e-3), (-5e-3, 5e-3))):
-            f.write(" facet normal 0 0 1\n  outer loop\n")
-            for x, y in tri:
-                f.write("   vertex %r %r 0\n" % (x, y))
-            f.write("  endloop\n endfacet\n")
-        f.write("endsolid plane\n")
+    lc.write_plane_stl(stl)
     ok = refused(env, workdir, "wall liquid fixed beside the pair's protocol2",
                  "'liquid fixed' must be the pair_style's liquid, 'liquid protocol2'",
                  wall_liquid="fixed")
