@@ -9,23 +9,28 @@
  * the rupture distance falls there like (1 - s)^(2/3)): q spreads that range out, and 24
  * steps in q resolve it; in V/R_h^3 and gap/R_h the bridge tends smoothly to the plane's
  * as s -> 0, its force like s), the scaled volume v = V/R_h^3 (uniform in ln v, nodes reaching
- * a quarter decade beyond the domain [1e-5, 1e-1] so that its edges get centred
+ * a quarter decade beyond the domain [1e-6, 0.3] so that its edges get centred
  * stencils), and the gap through
  *     w = sqrt(1 - sqrt(gap / rupture))  in [0, 1]  (w = 1 at contact, 0 at the fold),
  * i.e. gap = rupture (1 - w^2)^2. Why w and not gap/rupture: the force has two
  * narrow features, a steep fall over gaps of order sqrt(V/R) near contact (Willett's
  * S+ scale, a small fraction of the rupture distance for small V) and a square-root
  * singularity at the fold, F ~ F* + c sqrt(rupture - gap). In w both are smooth and
- * spread out (gap ~ (1 - w)^2 near contact, sqrt(rupture - gap) ~ w near the fold).
- * Stored: rupture/(R_h v^(1/3)) at each (s, v), the rupture distance without its V^(1/3)
- * growth (Lian's scaling), which a cubic in ln v follows only to 1e-4; and F/(2 pi gamma
- * R_h) with its w-slopes at each (s, v, w). Interpolation: cubic Lagrange in q and ln v
- * (4-point stencils), monotone cubic Hermite in w (Fritsch-Carlson slopes), so that along
- * the gap the force never rises where the exact one does not.
+ * spread out (gap ~ (1 - w)^2 near contact, sqrt(rupture - gap) ~ w near the fold); the
+ * cells are uniform in a cubic of w that narrows them further near contact (gap_node).
+ * Stored: sqrt(R_h v^(1/3) / rupture) at each (s, v), the rupture distance without its
+ * V^(1/3) growth (Lian's scaling), which a cubic in ln v follows only to 1e-4; and in each
+ * gap cell of each (s, v) node the cubic of F/(2 pi gamma R_h), from the cubic spline
+ * through the cell ends (spline_slopes). Interpolation: cubic Lagrange in q and ln v
+ * (4-point stencils, one 4 x 4 set of weights for the rupture distance and the force), the
+ * cell's cubic in the gap.
  * The fold needs the rupture distance to ~1e-5: within 1e-4 of it the exact force rises as
  * a square root of the distance to its fold, so an error e of the table's rupture distance
- * is a force error of up to ~1.6 sqrt(e) there (1.2 % at the 1.1e-4 of 12 steps in q and
- * an unscaled rupture distance).
+ * is a force error of up to ~1.6 sqrt(e) there.
+ * Domain and accuracy (table_validity; tests/test_table.c holds them): size ratio 1 to the
+ * plane, V/R_h^3 1e-6..0.3, theta 0..80 degrees; the rupture distance within 5e-5 (2e-4
+ * for nearly equal spheres above 30 degrees), the force within 0.1 % up to 1 - 1e-4 of
+ * the rupture distance (0.5 % for nearly equal spheres in the last 5e-4 of it), 1 % beyond.
  * Outside the table (validity extend): s and v are clamped for the scaled force, and the
  * rupture distance is extended with the V^(1/3) scaling of Lian's rule from the edge. */
 #include "laws.h"
@@ -37,14 +42,14 @@
 /* The grid. Node positions are given together with the reciprocal steps the lookup
  * multiplies by, since a division on every call would cost more than the interpolation:
  *   size ratio: q = sqrt(1 - s) at q_i = i / 24 (q = 1: the plane);
- *   volume:     ln v at ln v_j = ln(10^-5.25) + j ln(10)/4 (four per decade, 10^-0.75 last). */
-enum { TABLE_RATIOS = 25, TABLE_VOLUMES = 19, TABLE_GAPS = 33 };
+ *   volume:     ln v at ln v_j = ln(10^-6.25) + j ln(10)/4 (four per decade, 10^-0.25 last). */
+enum { TABLE_RATIOS = 25, TABLE_VOLUMES = 25, TABLE_GAPS = 33 };
 static const double table_ratio_nodes_per_q = 24.0;
-static const double table_volume_min = 1e-5;    /* the domain in V / R_h^3 */
-static const double table_volume_max = 1e-1;
-static const double table_log_volume_min = -11.512925464970229; /* ln 1e-5 */
-static const double table_log_volume_max = -2.3025850929940455; /* ln 1e-1 */
-static const double table_log_volume_first = -12.088571738218741; /* -5.25 ln 10 */
+static const double table_volume_min = 1e-6;    /* the domain in V / R_h^3 */
+static const double table_volume_max = 0.3;
+static const double table_log_volume_min = -13.815510557964274; /* ln 1e-6 */
+static const double table_log_volume_max = -1.2039728043259361; /* ln 0.3 */
+static const double table_log_volume_first = -14.391156831212787; /* -6.25 ln 10 */
 static const double table_log_volume_step = 0.5756462732485115;   /* ln(10) / 4 */
 static const double table_volume_nodes_per_log = 1.737177927613007; /* 4 / ln 10 */
 
@@ -53,16 +58,21 @@ static const double table_volume_nodes_per_log = 1.737177927613007; /* 4 / ln 10
  * which pays for the 24 steps in q. */
 static const int table_solver_steps = CB_EXACT_DEFAULT_STEPS / 2;
 
-/* A force value and its w-slope as one two-lane vector (GCC and Clang vector extension;
- * SSE2 on x86-64, NEON on arm64, scalar code elsewhere): the lookup sums both with the
- * same weights, one vector multiply-add per node instead of two scalar ones. */
-typedef double force_slope __attribute__((vector_size(2 * sizeof(double))));
+/* The cubic of one gap cell, F / (2 pi gamma R_h) = c[0] + c[1] x + c[2] x^2 + c[3] x^3 in
+ * x = (y - y_k) / h, as one four-lane vector (GCC and Clang vector extension: one SSE
+ * register on x86-64, NEON on arm64, scalar code elsewhere): the lookup sums the four
+ * coefficients of the 16 stencil nodes with the same weights, with nothing left to form
+ * from node values and slopes. In single precision (6e-8, 1000 times below the
+ * interpolation's error): half the memory (320 kB, within a core's L2 cache) and half the
+ * vector operations of double; the sum is taken to double before the cubic is evaluated. */
+typedef float cell_cubic __attribute__((vector_size(4 * sizeof(float))));
 
 struct cb_table {
     double contact_angle;
-    double rupture[TABLE_RATIOS][TABLE_VOLUMES]; /* rupture / (R_h v^(1/3)) */
-    /* F / (2 pi gamma R_h) and its w-slope, for each gap node the (s, v) plane */
-    force_slope force[TABLE_GAPS][TABLE_RATIOS][TABLE_VOLUMES];
+    /* sqrt(R_h v^(1/3) / rupture): the rupture distance without its V^(1/3) growth (Lian's
+     * scaling), as the inverse square root the gap coordinate multiplies by */
+    double rupture_root[TABLE_RATIOS][TABLE_VOLUMES];
+    cell_cubic force[TABLE_GAPS - 1][TABLE_RATIOS][TABLE_VOLUMES]; /* per cell, the (s, v) plane */
 };
 
 static double ratio_node(int i) /* s at node i (q ascending, s descending from 1 to 0) */
@@ -76,48 +86,64 @@ static double log_volume_node(int j)
     return table_log_volume_first + table_log_volume_step * j;
 }
 
-static double gap_node(int k) { return (double)k / (TABLE_GAPS - 1); } /* w */
+/* The gap cells are uniform in y = w - w^2 + w^3 (increasing, y = 0 at the fold and 1 at
+ * contact, dy/dw = 1 at the fold and 2 at contact, 2/3 at w = 1/3): cells half as wide in w
+ * near contact, where the steep fall of the force over gaps ~ sqrt(V/R) is narrowest in w at
+ * the smallest volumes (uniform cells in w left 0.1 % there at V/R_h^3 = 1e-6), the same
+ * at the fold, wider in between, where the force is smoothest. A cubic: one multiply-add
+ * more per call than w itself. */
+static double gap_node(int k) { return (double)k / (TABLE_GAPS - 1); } /* y */
 
-/* gap / rupture at a gap coordinate w, and back. */
+static double cell_coordinate(double w) { return w * (1.0 - w * (1.0 - w)); } /* y */
+
+static double cell_coordinate_slope(double w) { return 1.0 - w * (2.0 - 3.0 * w); } /* dy/dw */
+
+/* w at y, by Newton's method from w = y (y is monotone with a slope >= 2/3: at most a few
+ * steps to rounding; at preparation only). */
+static double gap_coordinate_at(double y)
+{
+    double w = y;
+    for (int step = 0; step < 50; ++step) {
+        double change = (cell_coordinate(w) - y) / cell_coordinate_slope(w);
+        w -= change;
+        if (fabs(change) <= 1e-16) break;
+    }
+    return w;
+}
+
+/* gap / rupture at a gap coordinate w (table_force inverts it). */
 static double gap_fraction(double w)
 {
     double c = 1.0 - w * w;
     return c * c;
 }
 
-static double gap_coordinate(double fraction) { return sqrt(1.0 - sqrt(fraction)); }
-
-/* Fritsch-Carlson slopes of a sequence increasing or decreasing in w: a cubic Hermite
- * with these slopes is monotone wherever the data are. At contact (w = 1) the slope is
- * the exact one, 0, since gap ~ (1 - w)^2 there. At the fold (w = 0) it is the slope of
- * the parabola through the first three nodes, kept to the sign of the first difference:
- * where the symmetric bridge of nearly equal spheres ruptures by instability (above about
- * 30 degrees) the exact force has no square root there, F ~ F* + b w^2, and the first
- * difference as the slope put the force of the last cell up to 0.6 % off. */
-static void monotone_slopes(const double *y, double h, double *m)
+/* The w-slopes of the cubic spline through the forces (C2, fourth order: the force is a
+ * smooth function of w over the whole bridge, so a spline follows it to ~h^4; the monotone
+ * Fritsch-Carlson slopes used until 2026-12 were second order near contact and at extrema,
+ * 0.15 % off near contact, and could not follow the non-monotone force near contact above
+ * about 70 degrees). At contact (w = 1) the slope is the exact one, 0, since gap ~
+ * (1 - w)^2 there. At the fold (w = 0) the end is not-a-knot (the first two cells one
+ * cubic): the force has a square root there, F ~ F* + c w, or none where the symmetric
+ * bridge of nearly equal spheres ruptures by instability (above about 30 degrees),
+ * F ~ F* + b w^2, and the condition follows both. Solved by the Thomas algorithm on
+ *     m[k-1] + 4 m[k] + m[k+1] = 3 (y[k+1] - y[k-1]) / h,   0 < k < n-1,
+ *     m[0] + 2 m[1] = (-5 y[0] + 4 y[1] + y[2]) / (2 h),     m[n-1] = 0. */
+static void spline_slopes(const double *y, double h, double *m)
 {
-    double d[TABLE_GAPS - 1];
-    for (int k = 0; k < TABLE_GAPS - 1; ++k) d[k] = (y[k + 1] - y[k]) / h;
-    m[0] = 0.5 * (3.0 * d[0] - d[1]);
-    if (m[0] * d[0] <= 0.0) m[0] = 0.0;
-    m[TABLE_GAPS - 1] = 0.0;
-    for (int k = 1; k < TABLE_GAPS - 1; ++k) {
-        if (d[k - 1] * d[k] <= 0.0) m[k] = 0.0;
-        else m[k] = 2.0 / (1.0 / d[k - 1] + 1.0 / d[k]); /* harmonic mean: monotone */
+    enum { N = TABLE_GAPS };
+    double diagonal[N], upper[N], rhs[N];
+    diagonal[0] = 1.0;
+    upper[0] = 2.0;
+    rhs[0] = (-5.0 * y[0] + 4.0 * y[1] + y[2]) / (2.0 * h);
+    for (int k = 1; k < N - 1; ++k) { /* eliminate m[k-1] from row k */
+        double factor = 1.0 / diagonal[k - 1];
+        diagonal[k] = 4.0 - upper[k - 1] * factor;
+        upper[k] = 1.0;
+        rhs[k] = 3.0 * (y[k + 1] - y[k - 1]) / h - rhs[k - 1] * factor;
     }
-    for (int k = 0; k < TABLE_GAPS - 1; ++k) {
-        if (d[k] == 0.0) {
-            m[k] = m[k + 1] = 0.0;
-            continue;
-        }
-        double a = m[k] / d[k], b = m[k + 1] / d[k];
-        double r = a * a + b * b;
-        if (r > 9.0) {
-            double t = 3.0 / sqrt(r);
-            m[k] = t * a * d[k];
-            m[k + 1] = t * b * d[k];
-        }
-    }
+    m[N - 1] = 0.0;
+    for (int k = N - 2; k >= 0; --k) m[k] = (rhs[k] - upper[k] * m[k + 1]) / diagonal[k];
 }
 
 static cb_status fill_node(struct cb_table *table, int i, int j, cb_message *msg)
@@ -132,9 +158,9 @@ static cb_status fill_node(struct cb_table *table, int i, int j, cb_message *msg
     cb_status status = cb_exact_rupture(&problem, &rupture, &bridges[TABLE_GAPS - 1]);
     if (status == CB_OK) {
         double gaps[TABLE_GAPS - 1];
-        /* Ascending gaps: w from 1 (contact) down to w_1; the fold (w = 0) is known. */
+        /* Ascending gaps: y from 1 (contact) down to y_1; the fold (y = 0) is known. */
         for (int k = 0; k < TABLE_GAPS - 1; ++k)
-            gaps[k] = rupture * gap_fraction(gap_node(TABLE_GAPS - 1 - k));
+            gaps[k] = rupture * gap_fraction(gap_coordinate_at(gap_node(TABLE_GAPS - 1 - k)));
         gaps[0] = 0.0;
         status = cb_exact_curve(&problem, TABLE_GAPS - 1, gaps, bridges);
     }
@@ -144,15 +170,17 @@ static cb_status fill_node(struct cb_table *table, int i, int j, cb_message *msg
                        "theta = %g degrees: %s",
                        r_large, v, table->contact_angle * 180.0 / CB_PI,
                        cb_status_message(status));
-    table->rupture[i][j] = rupture / (rh * cbrt(v));
-    double f[TABLE_GAPS], m[TABLE_GAPS];
+    table->rupture_root[i][j] = sqrt(rh * cbrt(v) / rupture);
+    double f[TABLE_GAPS], m[TABLE_GAPS], h = gap_node(1);
     for (int k = 0; k < TABLE_GAPS - 1; ++k)
         f[TABLE_GAPS - 1 - k] = bridges[k].force / (2.0 * CB_PI * rh);
     f[0] = bridges[TABLE_GAPS - 1].force / (2.0 * CB_PI * rh);
-    monotone_slopes(f, gap_node(1), m);
-    for (int k = 0; k < TABLE_GAPS; ++k) {
-        table->force[k][i][j][0] = f[k];
-        table->force[k][i][j][1] = m[k];
+    spline_slopes(f, h, m);
+    for (int k = 0; k < TABLE_GAPS - 1; ++k) { /* the Hermite cubic of the cell, in x */
+        double d = f[k + 1] - f[k], hm0 = h * m[k], hm1 = h * m[k + 1];
+        cell_cubic c = {(float)f[k], (float)hm0, (float)(3.0 * d - 2.0 * hm0 - hm1),
+                        (float)(-2.0 * d + hm0 + hm1)};
+        table->force[k][i][j] = c;
     }
     return CB_OK;
 }
@@ -215,29 +243,30 @@ static int lagrange_stencil(double x, int n, double w[4])
     return first;
 }
 
-/* rupture / R_h where the pair sits: the tabulated rupture / (R_h v^(1/3)) times v^(1/3)
- * (beyond the table's volumes, the edge value times v^(1/3): Lian's V^(1/3) scaling). */
-static double scaled_rupture(const struct cb_table *t, const cb_table_position *p,
-                             double cube_root_volume)
+/* sqrt(R_h / rupture) where the pair sits: the tabulated sqrt(R_h v^(1/3) / rupture) times
+ * v^(-1/6) (beyond the table's volumes, the edge value: Lian's V^(1/3) scaling). */
+static double rupture_root(const struct cb_table *t, const cb_table_position *p,
+                           double inverse_sixth_root_volume)
 {
     double row_sum[4];
     for (int a = 0; a < 4; ++a) {
-        const double *row = &t->rupture[p->ratio_first + a][p->volume_first];
+        const double *row = &t->rupture_root[p->ratio_first + a][p->volume_first];
         const double *wt = p->weight[a];
         row_sum[a] = (wt[0] * row[0] + wt[1] * row[1]) + (wt[2] * row[2] + wt[3] * row[3]);
     }
-    return ((row_sum[0] + row_sum[1]) + (row_sum[2] + row_sum[3])) * cube_root_volume;
+    return ((row_sum[0] + row_sum[1]) + (row_sum[2] + row_sum[3])) * inverse_sixth_root_volume;
 }
 
 /* Where the pair sits in the table: the 4 x 4 stencil in (q, ln v), its weights as
  * products (so that each lookup of the force is one weighted sum over 16 nodes), and
- * its rupture distance. */
+ * its rupture distance. This law's cost is the latency of its chain of dependent steps
+ * (a division, the logarithm, the stencil, the gap coordinate's square roots, the loads):
+ * what does not depend on the stencil is computed beside it, not after it. */
 static void table_locate(const cb_law *law, cb_pair *pair)
 {
     cb_table_position *p = &pair->table;
     /* V / R_h^3 with 1/R_h = (R1 + R2) / (2 R1 R2) from the radii: a division that runs
-     * alongside R_h's own instead of after it (this law's cost is its chain of dependent
-     * divisions, square roots and the logarithm); 1 / (2 R1) at a plane */
+     * alongside R_h's own instead of after it; 1 / (2 R1) at a plane */
     double inverse_rh = pair->plane ? 0.5 / pair->r1
                                     : (pair->r1 + pair->r2) / (2.0 * pair->r1 * pair->r2);
     double v = pair->volume * (inverse_rh * inverse_rh * inverse_rh);
@@ -251,8 +280,13 @@ static void table_locate(const cb_law *law, cb_pair *pair)
     p->ratio_first = lagrange_stencil(x_ratio, TABLE_RATIOS, ratio_weight);
     p->volume_first = lagrange_stencil(x_volume, TABLE_VOLUMES, volume_weight);
     for (int a = 0; a < 4; ++a)
-        for (int b = 0; b < 4; ++b) p->weight[a][b] = ratio_weight[a] * volume_weight[b];
-    p->scaled_rupture = scaled_rupture(table_of(law), p, exp(log_volume * (1.0 / 3.0)));
+        for (int b = 0; b < 4; ++b) {
+            p->weight[a][b] = ratio_weight[a] * volume_weight[b];
+            p->cell_weight[a][b] = (float)p->weight[a][b];
+        }
+    p->inverse_rh = inverse_rh;
+    p->rupture_root = rupture_root(table_of(law), p, exp(log_volume * (-1.0 / 6.0)));
+    p->scaled_rupture = 1.0 / (p->rupture_root * p->rupture_root);
 }
 
 static double table_rupture(const cb_law *law, const cb_pair *pair)
@@ -293,60 +327,62 @@ static double table_rupture_volume(const cb_law *law, const cb_pair *pair_in, do
     return exp(hi) * rh3;
 }
 
-/* The Hermite cell of w, with the (q, ln v)-weighted values and w-slopes at its ends. */
-typedef struct hermite_cell {
-    double w0, h, f0, f1, m0, m1;
-} hermite_cell;
-
-static hermite_cell cell_at(const struct cb_table *t, const cb_table_position *p, double w)
+/* The cubic of the gap cell k, weighted over the pair's (q, ln v) stencil: the 16 nodes'
+ * coefficients summed per ratio row first (short dependency chains). */
+static void cubic_at(const struct cb_table *t, const cb_table_position *p, int k, double c[4])
 {
-    hermite_cell c = {0.0, gap_node(1), 0.0, 0.0, 0.0, 0.0};
-    int k = (int)(w * (TABLE_GAPS - 1));
-    if (k > TABLE_GAPS - 2) k = TABLE_GAPS - 2;
-    c.w0 = k * c.h;
-    /* [f, m] at gap nodes k and k+1, each the weighted sum over the 16 stencil nodes,
-     * summed per ratio row first: short dependency chains */
-    force_slope low[4], high[4];
+    cell_cubic row_sum[4];
     for (int a = 0; a < 4; ++a) {
-        const force_slope *lo = t->force[k][p->ratio_first + a] + p->volume_first;
-        const force_slope *hi = t->force[k + 1][p->ratio_first + a] + p->volume_first;
-        const double *wt = p->weight[a];
-        low[a] = (wt[0] * lo[0] + wt[1] * lo[1]) + (wt[2] * lo[2] + wt[3] * lo[3]);
-        high[a] = (wt[0] * hi[0] + wt[1] * hi[1]) + (wt[2] * hi[2] + wt[3] * hi[3]);
+        const cell_cubic *row = t->force[k][p->ratio_first + a] + p->volume_first;
+        const float *wt = p->cell_weight[a];
+        row_sum[a] = (wt[0] * row[0] + wt[1] * row[1]) + (wt[2] * row[2] + wt[3] * row[3]);
     }
-    force_slope at_low = (low[0] + low[1]) + (low[2] + low[3]);
-    force_slope at_high = (high[0] + high[1]) + (high[2] + high[3]);
-    c.f0 = at_low[0];
-    c.m0 = at_low[1];
-    c.f1 = at_high[0];
-    c.m1 = at_high[1];
-    return c;
+    cell_cubic sum = (row_sum[0] + row_sum[1]) + (row_sum[2] + row_sum[3]);
+    for (int n = 0; n < 4; ++n) c[n] = sum[n];
 }
 
-static double hermite_value(const hermite_cell *c, double w)
+/* The cell of y (the last one for y = 1) and x = (y - y_k) / h in it. */
+static int cell_of(double y, double *x)
 {
-    double x = (w - c->w0) * (TABLE_GAPS - 1), x2 = x * x, x3 = x2 * x;
-    return (2 * x3 - 3 * x2 + 1) * c->f0 + (x3 - 2 * x2 + x) * c->h * c->m0 +
-           (-2 * x3 + 3 * x2) * c->f1 + (x3 - x2) * c->h * c->m1;
+    double scaled = y * (TABLE_GAPS - 1);
+    int k = (int)scaled;
+    if (k > TABLE_GAPS - 2) k = TABLE_GAPS - 2;
+    *x = scaled - k;
+    return k;
 }
 
-static double hermite_slope(const hermite_cell *c, double w)
+/* The cell's cubic and its dF/dx (dF/dy is (TABLE_GAPS - 1) times it) in powers of x, not
+ * by Horner's rule: x is known before the coefficients are loaded, so that after the loads
+ * the terms are independent products and a sum. */
+static double cubic_value(const double c[4], double x)
 {
-    double x = (w - c->w0) * (TABLE_GAPS - 1), x2 = x * x;
-    return ((6 * x2 - 6 * x) * c->f0 + (3 * x2 - 4 * x + 1) * c->h * c->m0 +
-            (-6 * x2 + 6 * x) * c->f1 + (3 * x2 - 2 * x) * c->h * c->m1) * (TABLE_GAPS - 1);
+    double x2 = x * x;
+    return (c[0] + c[1] * x) + (c[2] * x2 + c[3] * (x2 * x));
 }
+
+static double cubic_slope(const double c[4], double x)
+{
+    return c[1] + (c[2] * (2.0 * x) + c[3] * (3.0 * x * x));
+}
+
+/* Where the stiffness is taken in the end cells (table_force). */
+static const double slope_w_min = 0.5 / (TABLE_GAPS - 1), slope_w_max = 1.0 - 0.25 / (TABLE_GAPS - 1);
 
 static cb_status table_force(const cb_law *law, const cb_pair *pair, double gap,
                              double *force, double *stiffness)
 {
     const struct cb_table *t = table_of(law);
-    double rupture = pair->table.scaled_rupture * pair->r_harmonic;
-    double fraction = gap < rupture ? gap / rupture : 1.0;
-    double w = gap_coordinate(fraction);
-    hermite_cell c = cell_at(t, &pair->table, w);
+    const cb_table_position *p = &pair->table;
+    double rupture = p->scaled_rupture * pair->r_harmonic;
+    /* sqrt(gap / rupture) as sqrt(gap / R_h) sqrt(R_h / rupture): the first root does not
+     * wait for the stencil, and no division does */
+    double root_fraction = sqrt(gap * p->inverse_rh) * p->rupture_root;
+    double w = gap < rupture && root_fraction < 1.0 ? sqrt(1.0 - root_fraction) : 0.0;
+    double x = 0.0, c[4];
+    int k = cell_of(cell_coordinate(w), &x);
+    cubic_at(t, p, k, c);
     double scale = 2.0 * CB_PI * law->surface_tension * pair->r_harmonic;
-    double value = hermite_value(&c, w);
+    double value = cubic_value(c, x);
     if (!(value > 0.0) || gap >= rupture) {
         /* clamped at 0 (a repulsive exact force near contact at large angles), or held at
          * its value at the fold beyond it (a rupture rule reaching further than the
@@ -356,28 +392,28 @@ static cb_status table_force(const cb_law *law, const cb_pair *pair, double gap,
         return CB_OK;
     }
     *force = value * scale;
-    /* dF/dgap = dF/dw / (dgap/dw), dgap/dw = -4 rupture w (1 - w^2). Both vanish at
-     * contact (a finite limit) and dgap/dw vanishes at the fold (the exact force has an
+    /* dF/dgap = dF/dy dy/dw / (dgap/dw), dgap/dw = -4 rupture w (1 - w^2). Both vanish
+     * at contact (a finite limit) and dgap/dw vanishes at the fold (the exact force has an
      * infinite slope there). Within half a cell of either end the stiffness is taken at
-     * that half-cell point, so that it stays finite and well conditioned; the point lies
-     * in the same end cell, so the cell found for w serves. */
-    double half = 0.5 * c.h;
-    double w_slope = w < half ? half : w > 1.0 - half ? 1.0 - half : w;
-    *stiffness = hermite_slope(&c, w_slope) * scale /
-                 (-4.0 * rupture * w_slope * (1.0 - w_slope * w_slope));
+     * that half-cell point, so that it stays finite and well conditioned: w = h/2 at the
+     * fold, 1 - h/4 at contact (dy/dw is 1 and 2 there); the point lies in the same end
+     * cell, so the cell found for w serves. */
+    double w_slope = w < slope_w_min ? slope_w_min : w > slope_w_max ? slope_w_max : w;
+    double x_slope = cell_coordinate(w_slope) * (TABLE_GAPS - 1) - k;
+    *stiffness = cubic_slope(c, x_slope) * (TABLE_GAPS - 1) * cell_coordinate_slope(w_slope) *
+                 scale / (-4.0 * rupture * w_slope * (1.0 - w_slope * w_slope));
     return CB_OK;
 }
 
-/* |dF/dw| / (scale / h) on a Hermite cell, as a quadratic in x = (w - w0) / h: the
- * derivative of hermite_value's cubic, collected by powers of x. */
+/* |dF/dx| of a cell's cubic as a quadratic in x, and its largest value over [xa, xb]:
+ * at an end or at the vertex. */
 typedef struct slope_quadratic {
     double c0, c1, c2;
 } slope_quadratic;
 
-static slope_quadratic slope_of(const hermite_cell *c)
+static slope_quadratic slope_of(const double c[4])
 {
-    double d = c->f1 - c->f0, hm0 = c->h * c->m0, hm1 = c->h * c->m1;
-    slope_quadratic q = {hm0, 6.0 * d - 4.0 * hm0 - 2.0 * hm1, -6.0 * d + 3.0 * (hm0 + hm1)};
+    slope_quadratic q = {c[1], 2.0 * c[2], 3.0 * c[3]};
     return q;
 }
 
@@ -386,7 +422,6 @@ static double slope_at(const slope_quadratic *q, double x)
     return q->c0 + x * (q->c1 + x * q->c2);
 }
 
-/* The largest |slope| over [xa, xb]: at an end or at the vertex. */
 static double slope_max(const slope_quadratic *q, double xa, double xb)
 {
     double m = fmax(fabs(slope_at(q, xa)), fabs(slope_at(q, xb)));
@@ -398,46 +433,63 @@ static double slope_max(const slope_quadratic *q, double xa, double xb)
 }
 
 /* w (1 - w^2), to which dgap/dw is proportional: concave on [0, 1], so its least value
- * over an interval is at an end. */
+ * over an interval is at an end; dy/dw is convex, so its largest is at an end. */
 static double gap_rate(double w) { return w * (1.0 - w * w); }
+
+/* The stiffness at w in units of scale / (4 rupture): |dF/dx| CELLS dy/dw / (w (1 - w^2)),
+ * without the factor CELLS (table_force's expression). */
+static double stiffness_at(const slope_quadratic *q, int k, double w)
+{
+    double x = cell_coordinate(w) * (TABLE_GAPS - 1) - k;
+    return fabs(slope_at(q, x)) * cell_coordinate_slope(w) / gap_rate(w);
+}
 
 /* An upper bound of |dF/dgap| over 0 <= gap <= rupture, derived from the interpolant
  * rather than sampled (the steepest point lies in the half cell before the fold, where
  * samples of the gap rarely fall). table_force's stiffness at any gap is
- *     |H'(u)| scale / (4 rupture u (1 - u^2)),  u = w clamped into [h/2, 1 - h/2],
- * H the Hermite cubic of u's cell (0 where the force is clamped or held). On an interval
- * of a cell, max|H'| (a quadratic: ends or vertex) over the least u (1 - u^2) (an end)
- * bounds it; intervals are halved until that bound is within 1e-3 of the largest
- * stiffness found at their points, or is below it. The result is multiplied by
- * 1 + 1e-9 for the rounding of table_force's own evaluation. */
+ *     |H'(x)| CELLS dy/dw scale / (4 rupture u (1 - u^2)),
+ * u = w clamped into [slope_w_min, slope_w_max], H the cubic of u's cell in x (0 where the
+ * force is clamped or held). On an interval of a cell in w, max|H'| (a quadratic in x,
+ * which is monotone in w: ends or vertex) times the largest dy/dw over the least
+ * u (1 - u^2) (both at an end) bounds it; intervals are halved until that bound is within
+ * 1e-3 of the largest stiffness found at their points, or is below it. The result is
+ * multiplied by 1 + 1e-9 for the rounding of table_force's own evaluation. */
 static double table_stiffness_bound(const cb_law *law, const cb_pair *pair)
 {
     enum { CELLS = TABLE_GAPS - 1, STACK = 64, DEPTH = 40 };
-    const double h = 1.0 / CELLS, half = 0.5 * h, tolerance = 1e-3;
+    const double tolerance = 1e-3;
     slope_quadratic slopes[CELLS];
-    double lower = 0.0; /* the largest |H'| / rate found at a point */
+    double edge[CELLS + 1]; /* the cells' ends in w */
+    for (int k = 0; k <= CELLS; ++k) edge[k] = gap_coordinate_at(gap_node(k));
+    double lower = 0.0; /* the largest stiffness found at a point */
     for (int k = 0; k < CELLS; ++k) {
-        hermite_cell c = cell_at(table_of(law), &pair->table, k * h);
-        slopes[k] = slope_of(&c);
+        double c[4];
+        cubic_at(table_of(law), &pair->table, k, c);
+        slopes[k] = slope_of(c);
         for (int i = 0; i <= 4; ++i) {
-            double u = fmin(fmax((k + 0.25 * i) * h, half), 1.0 - half);
-            lower = fmax(lower, fabs(slope_at(&slopes[k], (u - k * h) * CELLS)) / gap_rate(u));
+            double u = edge[k] + 0.25 * i * (edge[k + 1] - edge[k]);
+            u = fmin(fmax(u, slope_w_min), slope_w_max);
+            lower = fmax(lower, stiffness_at(&slopes[k], k, u));
         }
     }
     double upper = lower;
     for (int k = 0; k < CELLS; ++k) {
         struct { double a, b; int depth; } stack[STACK];
         int n = 0;
-        stack[n].a = fmax(k * h, half);
-        stack[n].b = fmin((k + 1) * h, 1.0 - half);
+        stack[n].a = fmax(edge[k], slope_w_min);
+        stack[n].b = fmin(edge[k + 1], slope_w_max);
         stack[n++].depth = 0;
         while (n > 0) {
             --n;
             double a = stack[n].a, b = stack[n].b;
             int depth = stack[n].depth;
-            double xa = (a - k * h) * CELLS, xb = (b - k * h) * CELLS, mid = 0.5 * (a + b);
-            double bound = slope_max(&slopes[k], xa, xb) / fmin(gap_rate(a), gap_rate(b));
-            lower = fmax(lower, fabs(slope_at(&slopes[k], 0.5 * (xa + xb))) / gap_rate(mid));
+            if (!(a < b)) continue; /* an end cell's part beyond the clamp */
+            double xa = cell_coordinate(a) * CELLS - k, xb = cell_coordinate(b) * CELLS - k;
+            double mid = 0.5 * (a + b);
+            double bound = slope_max(&slopes[k], xa, xb) *
+                           fmax(cell_coordinate_slope(a), cell_coordinate_slope(b)) /
+                           fmin(gap_rate(a), gap_rate(b));
+            lower = fmax(lower, stiffness_at(&slopes[k], k, mid));
             if (bound <= lower * (1.0 + tolerance) || depth == DEPTH || n + 2 > STACK) {
                 upper = fmax(upper, bound);
                 continue;
@@ -455,17 +507,14 @@ static double table_stiffness_bound(const cb_law *law, const cb_pair *pair)
     return upper * CELLS * scale / (4.0 * rupture) * (1.0 + 1e-9);
 }
 
-/* The table's range, where tests/test_table.c holds it to the exact solver: the rupture
- * distance within 2e-4 (relative; 1e-4 at most found), the force within 0.5 % at every gap
- * up to (1 - 1e-4) of the smaller of the two rupture distances, and within 1 % from there
- * to it (the exact force's square root at its fold magnifies the rupture distance's error).
- * Between the two rupture distances one bridge has ruptured and the other not.
- * Above about 70 degrees the exact force near contact is small and no longer falls
- * monotonically with the gap, which the monotone interpolant does not follow. */
+/* The table's range, where tests/test_table.c holds it to the exact solver (the file's
+ * head states the figures). Between the two rupture distances one bridge has ruptured and
+ * the other not. Above 80 degrees the force near contact is a small difference of the
+ * pressure and tension terms, repulsive at the larger volumes (clamped at 0 here). */
 static cb_validity table_validity(const cb_law *law)
 {
     (void)law;
-    cb_validity v = {table_volume_min, table_volume_max, 70.0 * CB_PI / 180.0,
+    cb_validity v = {table_volume_min, table_volume_max, 80.0 * CB_PI / 180.0,
                      HUGE_VAL, CB_RADIUS_HARMONIC,
                      "the table's range, checked against the exact solver (law_table.c)"};
     return v;

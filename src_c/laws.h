@@ -18,7 +18,10 @@
 typedef struct cb_table_position {
     int ratio_first, volume_first; /* first nodes of the 4-point stencils */
     double weight[4][4];           /* ratio weight times volume weight, per stencil node */
-    double scaled_rupture;         /* rupture / R_h, interpolated */
+    float cell_weight[4][4];       /* the same in single precision, for the force's cells */
+    double inverse_rh;             /* 1 / R_h */
+    double rupture_root;           /* sqrt(R_h / rupture), interpolated */
+    double scaled_rupture;         /* rupture / R_h, its inverse square */
 } cb_table_position;
 
 /* Inputs of one evaluation, with the radius conventions every law may need.  At a plane
