@@ -75,7 +75,8 @@ static cb_status check_inputs(const cb_law *law, double r1, double r2, double ga
  * refuses (validity strict, or beyond the table) is reported here, and *out is untouched. */
 static cb_status derive(const cb_law *law, double r1, double r2, double volume, cb_bridge *out)
 {
-    cb_pair pair = cb_pair_make(law, r1, r2, volume);
+    cb_pair pair;
+    cb_pair_make(law, r1, r2, volume, &pair);
     double rupture = 0.0, force = 0.0;
     cb_status status = cb_pair_rupture(law, &pair, &rupture);
     if (status != CB_OK) return status;
@@ -142,7 +143,8 @@ static cb_status force_of(const cb_law *law, double r1, double r2, double gap,
      * square root, four divisions and the exponential, x0.96-0.98 of the benchmark
      * scene's wet loop, bench/README.md); else through the law's row. */
     if (cb_bridge_held(law, r1, r2, gap, bridge, force)) return CB_OK;
-    cb_pair pair = cb_pair_make(law, r1, r2, bridge->volume);
+    cb_pair pair;
+    cb_pair_make(law, r1, r2, bridge->volume, &pair);
     return cb_pair_bridge_force(law, &pair, bridge, gap, force);
 }
 

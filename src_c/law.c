@@ -336,22 +336,20 @@ cb_validity cb_law_validity(const cb_law *law)
     return cb_law_ops_of(law)->validity(law);
 }
 
-cb_pair cb_pair_make(const cb_law *law, double r1, double r2, double volume)
+void cb_pair_make(const cb_law *law, double r1, double r2, double volume, cb_pair *pair)
 {
-    cb_pair pair;
     const cb_law_ops *ops = cb_law_ops_of(law);
-    pair.plane = cb_is_plane(r2);
-    if (pair.plane && !ops->plane) /* the Derjaguin-equivalent pair (capbridge.h) */
+    pair->plane = cb_is_plane(r2);
+    if (pair->plane && !ops->plane) /* the Derjaguin-equivalent pair (capbridge.h) */
         r1 = r2 = 2.0 * r1;
-    pair.r1 = r1;
-    pair.r2 = r2;
-    pair.r_small = r1 < r2 ? r1 : r2;
-    pair.r_large = r1 < r2 ? r2 : r1;
-    pair.r_harmonic = cb_radius_harmonic(r1, r2);
-    pair.r_geometric = cb_radius_geometric(r1, r2);
-    pair.volume = volume;
-    if (ops->locate) ops->locate(law, &pair);
-    return pair;
+    pair->r1 = r1;
+    pair->r2 = r2;
+    pair->r_small = r1 < r2 ? r1 : r2;
+    pair->r_large = r1 < r2 ? r2 : r1;
+    pair->r_harmonic = cb_radius_harmonic(r1, r2);
+    pair->r_geometric = cb_radius_geometric(r1, r2);
+    pair->volume = volume;
+    if (ops->locate) ops->locate(law, pair);
 }
 
 static cb_status check_pair(const cb_law *law, double r1, double r2, double volume)
@@ -405,7 +403,8 @@ cb_status cb_rupture_distance(const cb_law *law, double r1, double r2, double vo
     cb_status status = check_pair(law, r1, r2, volume);
     if (status != CB_OK) return status;
     if (!distance) return CB_ERR_NULL;
-    cb_pair pair = cb_pair_make(law, r1, r2, volume);
+    cb_pair pair;
+    cb_pair_make(law, r1, r2, volume, &pair);
     return cb_pair_rupture(law, &pair, distance);
 }
 
@@ -419,7 +418,8 @@ cb_status cb_rupture_volume(const cb_law *law, double r1, double r2, double gap,
         *volume = 0.0;
         return CB_OK;
     }
-    cb_pair pair = cb_pair_make(law, r1, r2, 0.0);
+    cb_pair pair;
+    cb_pair_make(law, r1, r2, 0.0, &pair);
     double v = NAN; /* refused below if no rule gives it */
     switch (law->rupture_in_use) {
     case CB_RUPTURE_LIAN: v = cb_rupture_volume_lian(law, &pair, gap); break;
@@ -501,7 +501,8 @@ cb_status cb_force(const cb_law *law, double r1, double r2, double volume, doubl
     if (status != CB_OK) return status;
     if (!force) return CB_ERR_NULL;
     if (!isfinite(gap)) return CB_ERR_NOT_FINITE;
-    cb_pair pair = cb_pair_make(law, r1, r2, volume);
+    cb_pair pair;
+    cb_pair_make(law, r1, r2, volume, &pair);
     return cb_pair_force(law, &pair, 0.0, gap, force, stiffness);
 }
 
@@ -567,7 +568,8 @@ cb_status cb_capillary_stiffness_bound(const cb_law *law, double r1, double r2, 
     if (ops->stiffness_bound) {
         /* the law's own (the table law's, from its interpolant cell by cell: its steepest
          * point, in the half cell before the fold, falls between any samples of the gap) */
-        cb_pair pair = cb_pair_make(law, r1, r2, volume);
+        cb_pair pair;
+        cb_pair_make(law, r1, r2, volume, &pair);
         double bound = ops->stiffness_bound(law, &pair);
         if (!isfinite(bound)) return CB_ERR_RANGE;
         *stiffness = bound;

@@ -38,8 +38,10 @@ typedef struct cb_pair {
     cb_table_position table; /* set by the table law's locate, for it only */
 } cb_pair;
 
-/* The pair of one call; for the table law, located in its table. */
-cb_pair cb_pair_make(const cb_law *law, double r1, double r2, double volume);
+/* The pair of one call; for the table law, located in its table. Written through a
+ * pointer, not returned: returned by value, the struct (250 bytes with the table's
+ * position) was built on the stack and copied, ~25 ns on every law's call. */
+void cb_pair_make(const cb_law *law, double r1, double r2, double volume, cb_pair *pair);
 
 /* For a pair already made from checked inputs (cb_force, cb_rupture_distance and
  * cb_bridge_step share them, so that one call computes the rupture distance at most once):

@@ -172,7 +172,8 @@ static void bridge_of_law(const cb_law *law, double r1, double r2, double volume
                  CB_OK);
     CHECK(change == CB_BRIDGE_FORMED);
     CHECK_STATUS(cb_rupture_distance(law, r1, r2, volume, &rupture), CB_OK);
-    cb_pair pair = cb_pair_make(law, r1, r2, volume);
+    cb_pair pair;
+    cb_pair_make(law, r1, r2, volume, &pair);
     const cb_law_ops *ops = cb_law_ops_of(law);
     CHECK(same_bits(bridge.law_constant, ops->bridge_constant(law, &pair)));
     CHECK(bridge.law_constant >= 0.0);
