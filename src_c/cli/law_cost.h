@@ -9,8 +9,10 @@
  * 0 <= gap <= the law's rupture distance). The laws take turns within every timed pass
  * and each keeps its best pass, so that the load of a shared machine falls on all of
  * them alike.  A law with a viscosity (keyword viscosity) is timed as what a bridge pays
- * with its viscous force on: cb_force and cb_viscous_damping per call.  Returns 0 on
- * success, -1 when memory runs out. */
-int cb_law_costs_ns(const cb_law *laws, int n, double *ns_per_call);
+ * with its viscous force on: cb_force and cb_viscous_damping per call.  If
+ * ns_per_rupture is not NULL, the cost of cb_rupture_distance alone on the same pairs is
+ * timed in the same passes (what a law pays to place the pair before its force: for the
+ * table law its stencil).  Returns 0 on success, -1 when memory runs out. */
+int cb_law_costs_ns(const cb_law *laws, int n, double *ns_per_call, double *ns_per_rupture);
 
 #endif
