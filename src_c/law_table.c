@@ -22,7 +22,7 @@
  * V^(1/3) growth (Lian's scaling), which a cubic in ln v follows only to 1e-4; and in each
  * gap cell of each (s, v) node the cubic of F/(2 pi gamma R_h), from the cubic spline
  * through the cell ends (spline_slopes). Interpolation: cubic Lagrange in q and ln v
- * (4-point stencils, one 4 x 4 set of weights for the rupture distance and the force), the
+ * (4-point stencils, the same weights for the rupture distance and the force), the
  * cell's cubic in the gap.
  * The fold needs the rupture distance to ~1e-5: within 1e-4 of it the exact force rises as
  * a square root of the distance to its fold, so an error e of the table's rupture distance
@@ -251,15 +251,18 @@ static double rupture_root(const struct cb_table *t, const cb_table_position *p,
     double row_sum[4];
     for (int a = 0; a < 4; ++a) {
         const double *row = &t->rupture_root[p->ratio_first + a][p->volume_first];
-        const double *wt = p->weight[a];
+        const double *wt = p->volume_weight;
         row_sum[a] = (wt[0] * row[0] + wt[1] * row[1]) + (wt[2] * row[2] + wt[3] * row[3]);
     }
-    return ((row_sum[0] + row_sum[1]) + (row_sum[2] + row_sum[3])) * inverse_sixth_root_volume;
+    const double *wt = p->ratio_weight;
+    return ((wt[0] * row_sum[0] + wt[1] * row_sum[1]) +
+            (wt[2] * row_sum[2] + wt[3] * row_sum[3])) * inverse_sixth_root_volume;
 }
 
-/* Where the pair sits in the table: the 4 x 4 stencil in (q, ln v), its weights as
- * products (so that each lookup of the force is one weighted sum over 16 nodes), and
- * its rupture distance. This law's cost is the latency of its chain of dependent steps
+/* Where the pair sits in the table: the 4 x 4 stencil in (q, ln v), its weights along
+ * each axis (a sum over the stencil is four rows summed with the volume weights, then the
+ * rows with the ratio weights: no 16 products to form first), and its rupture distance.
+ * This law's cost is the latency of its chain of dependent steps
  * (a division, the logarithm, the stencil, the gap coordinate's square roots, the loads):
  * what does not depend on the stencil is computed beside it, not after it. */
 static void table_locate(const cb_law *law, cb_pair *pair)
@@ -276,14 +279,12 @@ static void table_locate(const cb_law *law, cb_pair *pair)
                                                          : log_volume;
     double x_ratio = sqrt(1.0 - pair->r_small / pair->r_large) * table_ratio_nodes_per_q;
     double x_volume = (clamped - table_log_volume_first) * table_volume_nodes_per_log;
-    double ratio_weight[4], volume_weight[4];
-    p->ratio_first = lagrange_stencil(x_ratio, TABLE_RATIOS, ratio_weight);
-    p->volume_first = lagrange_stencil(x_volume, TABLE_VOLUMES, volume_weight);
-    for (int a = 0; a < 4; ++a)
-        for (int b = 0; b < 4; ++b) {
-            p->weight[a][b] = ratio_weight[a] * volume_weight[b];
-            p->cell_weight[a][b] = (float)p->weight[a][b];
-        }
+    p->ratio_first = lagrange_stencil(x_ratio, TABLE_RATIOS, p->ratio_weight);
+    p->volume_first = lagrange_stencil(x_volume, TABLE_VOLUMES, p->volume_weight);
+    for (int n = 0; n < 4; ++n) {
+        p->cell_ratio_weight[n] = (float)p->ratio_weight[n];
+        p->cell_volume_weight[n] = (float)p->volume_weight[n];
+    }
     p->inverse_rh = inverse_rh;
     p->rupture_root = rupture_root(table_of(law), p, exp(log_volume * (-1.0 / 6.0)));
     p->scaled_rupture = 1.0 / (p->rupture_root * p->rupture_root);
@@ -328,16 +329,18 @@ static double table_rupture_volume(const cb_law *law, const cb_pair *pair_in, do
 }
 
 /* The cubic of the gap cell k, weighted over the pair's (q, ln v) stencil: the 16 nodes'
- * coefficients summed per ratio row first (short dependency chains). */
+ * coefficients summed per ratio row first, then the rows (short dependency chains). */
 static void cubic_at(const struct cb_table *t, const cb_table_position *p, int k, double c[4])
 {
     cell_cubic row_sum[4];
     for (int a = 0; a < 4; ++a) {
         const cell_cubic *row = t->force[k][p->ratio_first + a] + p->volume_first;
-        const float *wt = p->cell_weight[a];
+        const float *wt = p->cell_volume_weight;
         row_sum[a] = (wt[0] * row[0] + wt[1] * row[1]) + (wt[2] * row[2] + wt[3] * row[3]);
     }
-    cell_cubic sum = (row_sum[0] + row_sum[1]) + (row_sum[2] + row_sum[3]);
+    const float *wt = p->cell_ratio_weight;
+    cell_cubic sum =
+        (wt[0] * row_sum[0] + wt[1] * row_sum[1]) + (wt[2] * row_sum[2] + wt[3] * row_sum[3]);
     for (int n = 0; n < 4; ++n) c[n] = sum[n];
 }
 
@@ -366,7 +369,8 @@ static double cubic_slope(const double c[4], double x)
 }
 
 /* Where the stiffness is taken in the end cells (table_force). */
-static const double slope_w_min = 0.5 / (TABLE_GAPS - 1), slope_w_max = 1.0 - 0.25 / (TABLE_GAPS - 1);
+static const double slope_w_min = 0.5 / (TABLE_GAPS - 1);
+static const double slope_w_max = 1.0 - 0.25 / (TABLE_GAPS - 1);
 
 static cb_status table_force(const cb_law *law, const cb_pair *pair, double gap,
                              double *force, double *stiffness)

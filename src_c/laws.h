@@ -17,8 +17,9 @@
  * by both its rupture distance and its force. */
 typedef struct cb_table_position {
     int ratio_first, volume_first; /* first nodes of the 4-point stencils */
-    double weight[4][4];           /* ratio weight times volume weight, per stencil node */
-    float cell_weight[4][4];       /* the same in single precision, for the force's cells */
+    double ratio_weight[4], volume_weight[4];        /* the Lagrange weights along each axis */
+    float cell_ratio_weight[4], cell_volume_weight[4]; /* the same in single precision, for the
+                                                        * force's cells */
     double inverse_rh;             /* 1 / R_h */
     double rupture_root;           /* sqrt(R_h / rupture), interpolated */
     double scaled_rupture;         /* rupture / R_h, its inverse square */
