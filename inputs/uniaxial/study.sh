@@ -1,9 +1,8 @@
 #!/usr/bin/env bash
 # The runs of docs/results/uniaxial.md: uniaxial compression (Richefeu 2007 section 4.2) for
-# w = 2, 4, 6 % under every liquid protocol each engine has (LAMMPS: Protocols 1, 2, 3;
-# LIGGGHTS: fixed volume and Protocol 2), half of the bridges removed (LAMMPS, w = 2 and 4 %,
-# Protocol 2 with fix capillary/liquid remove 0.5; LIGGGHTS, fixed volume, unlike pairs dry),
-# and dry; then post.py.
+# w = 2, 4, 6 % under Protocols 1, 2 and 3 in each engine, half of the bridges removed (w = 2
+# and 4 %, Protocol 2: LAMMPS fix capillary/liquid remove 0.5, LIGGGHTS the model's remove
+# 0.5, both with the draw of seed 7723), and dry; then post.py.
 # w is in percent of the grains' mass, as the decks take it (-var w 2 = 2 %).
 # Usage: inputs/uniaxial/study.sh [-seed N] [smoke|default|paper] [lammps] [liggghts]
 #   (default: smoke, both engines). Writes out/uniaxial/study-SIZE/ and copies the CSV and PNG
@@ -52,7 +51,7 @@ one() {  # one ENGINE NAME -var ... : runs a case unless it finished before
 for engine in "${engines[@]}"; do
   case $engine in
     lammps) protocols=(protocol1 protocol2 protocol3) half=protocol2 ;;
-    liggghts) protocols=(fixed protocol2) half=fixed ;;
+    liggghts) protocols=(protocol1 protocol2 protocol3) half=protocol2 ;;
     *) echo "study.sh: unknown engine $engine" >&2; exit 2 ;;
   esac
   # first the curve sigma_rupt(w) of the first protocol, the half-bridges variant and dry,
