@@ -14,11 +14,20 @@
  * each wall's model hands the pair's model, through this interface, its formations (counted
  * with the pair's), the liquid of its broken bridges (to the grain: the wall holds none) and
  * its held bridges (the liquid census, the per-atom tally, Protocol 3's receivers).
+ *
+ * Protocol 1 (and `start bridges`, its distribution at the start of Protocols 2 and 3)
+ * distributes the liquid at the start of the pair's pass, before fix wall/gran computes: a
+ * wall therefore also gives the pair's model its grains as they are now (WallSource: a
+ * primitive wall resolves every grain's gap itself, and its contact history is per grain),
+ * so that one distribution covers the pairs and the walls, as LAMMPS's fix capillary/liquid
+ * does with fix capillary/wall.
  */
 #ifndef CAPBRIDGE_LIGGGHTS_PASS_H_
 #define CAPBRIDGE_LIGGGHTS_PASS_H_
 
 #include "capbridge.h"
+
+#include <vector>
 
 namespace capbridge_liggghts {
 
@@ -32,18 +41,40 @@ struct WallBridge {
     double en[3];       // unit normal from the wall to the grain
 };
 
+/* A grain of a wall's group as Protocol 1's distribution sees it: its gap now, its bridge. */
+struct WallSlot {
+    double *history;    // its cb_bridge in the wall's contact history
+    const cb_law *law;  // the law at the wall's angle
+    int i;              // the grain (owned)
+    double r, gap;
+    bool candidate;     // within the distance fix wall/gran calls the model at
+};
+
+/* A wall as Protocol 1's distribution sees it. */
+class WallSource {
+  public:
+    /* Every owned grain of the wall's group that is a candidate or holds a bridge. */
+    virtual void protocol1_slots(std::vector<WallSlot> &out) = 0;
+
+  protected:
+    ~WallSource() {}
+};
+
 class LiquidPass {
   public:
-    /* At a wall model's init, after the pair's (Protocols 2, 3): the wall joins the pass of
-     * every step; returns its key (negative, one per wall). */
-    virtual long long attach_wall() = 0;
-    /* The liquid mode of the pair ("protocol2", "protocol3") and the volume its reach is
-     * built for (the design volume of the run). */
+    /* At a wall model's init, after the pair's (Protocols 1, 2, 3): the wall joins the pass
+     * of every step and the distributions; returns its key (negative, one per wall). */
+    virtual long long attach_wall(WallSource *source) = 0;
+    /* The liquid mode of the pair ("protocol1", "protocol2", "protocol3") and the volume
+     * its reach is built for (the design volume of the run). */
     virtual const char *liquid() const = 0;
     virtual double design_volume() const = 0;
-    /* The liquid starts with a Protocol 1 distribution (`start bridges`), which, in the
-     * pair's pass, cannot reach the walls. */
-    virtual bool starts_with_distribution() const = 0;
+    /* The law of Protocol 1's distributions (liquid protocol1, or `start bridges`), whose
+     * eqs. 13-14 solve for one alpha with one law: a wet wall's must be the same; NULL when
+     * the liquid never distributes. */
+    virtual const cb_law *distribution_law() const = 0;
+    /* Protocol 1: no bridge forms at contact, the distributions give them. */
+    virtual bool distributes() const = 0;
     /* An updating pass of the pair is open: its end waits for the walls. */
     virtual bool open() const = 0;
     virtual double free_liquid(const int i) const = 0;
@@ -54,6 +85,11 @@ class LiquidPass {
     /* A wall bridge that exists after this step's transitions (any liquid: the tally; under
      * the protocols the census and Protocol 3's receivers too). */
     virtual void wall_held(const WallBridge &b, const double volume) = 0;
+    /* In the pass that removes bridges (keyword remove, fix capillaryRemove): the wall
+     * bridge of grain b.i, removed if the draw picks it (its liquid then the grain's, as a
+     * broken bridge's), counted for the removal's report either way. */
+    virtual bool removing() const = 0;
+    virtual void wall_removal(const WallBridge &b, cb_bridge *bridge) = 0;
     /* fix capillaryFinish: the end of the pass, after every wall. */
     virtual void finish_deferred() = 0;
 

@@ -15,6 +15,11 @@
  *     owners.  Per pair: the two atom IDs, the radii (smaller first, as the model hands them
  *     to the core), the gap, whether it is a candidate, and its bridge's volume; per local
  *     atom: its ID and free liquid;
+ *   - each wet primitive wall of a fix wall/gran with `cohesion capillary` (WallSource,
+ *     capbridge_liggghts_pass.h) adds its grains as pairs of the grain (r, CB_PLANE: the core
+ *     weighs a wall pair as the grain and its mirror image, R = r) and the wall's key
+ *     (negative): the grains it will visit in this step, its own test for a candidate, their
+ *     gaps now; a wall bridge is its grain's, so each comes from one rank;
  *   - rank 0 orders the pairs by their IDs and keeps each once, sums the liquid (bridges in
  *     that order, free liquid in the order of the atom IDs, compensated), solves eqs. 13-14
  *     with the core over the candidates in that order, and scatters the volumes back: the
@@ -30,6 +35,7 @@
 #define CAPBRIDGE_LIGGGHTS_PROTOCOL1_H_
 
 #include "capbridge.h"
+#include "capbridge_liggghts_pass.h"
 #include "capbridge_liggghts_reach.h"
 
 #include "atom.h"
@@ -49,9 +55,13 @@
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace capbridge_liggghts {
+
+/* The walls in the pass: each wall's key (negative) and its grains. */
+typedef std::vector<std::pair<long long, WallSource *> > WallSources;
 
 /* Neumaier's compensated sum: the total liquid to a few roundings, whatever the count. */
 class CompensatedSum {
@@ -113,14 +123,15 @@ class Protocol1 : protected LAMMPS_NS::Pointers {
     }
 
     /* The distribution (collective): all liquid, free and in bridges, over the candidate
-     * pairs with `law`; the design volume bounds the largest bridge it may give.  Returns
-     * the liquid it distributed. */
+     * pairs and wall contacts with `law`; the design volume bounds the largest bridge it may
+     * give.  Returns the liquid it distributed. */
     double distribute(const cb_law *law, const int history_offset, double *free_liquid,
-                      const Reach &design)
+                      const Reach &design, const WallSources &walls)
     {
         attempted_ = true;
         last_step_ = update->ntimestep;
-        gather(history_offset);
+        gather(law, history_offset);
+        gather_walls(walls);
         std::vector<double> volumes(where_.size(), 0.0);
         double result[3] = {0.0, 0.0, 0.0};  // status, alpha, total
         solve_over_ranks(law, free_liquid, volumes, result);
@@ -143,7 +154,7 @@ class Protocol1 : protected LAMMPS_NS::Pointers {
             error->all(FLERR, text);
         }
         check_design(result[1], design);
-        apply(law, volumes, free_liquid);
+        apply(volumes, free_liquid);
         return result[2];
     }
 
@@ -151,7 +162,7 @@ class Protocol1 : protected LAMMPS_NS::Pointers {
     enum { PAIR_VALUES = 7 };  // low ID, high ID, ra, rb, gap, candidate, volume
 
     /* step 1: this rank's pairs and free liquid */
-    void gather(const int history_offset)
+    void gather(const cb_law *law, const int history_offset)
     {
         pairs_.clear();
         where_.clear();
@@ -192,7 +203,28 @@ class Protocol1 : protected LAMMPS_NS::Pointers {
                     swap ? radius[j] : radius[i], swap ? radius[i] : radius[j], gap,
                     candidate ? 1.0 : 0.0, stored.active != 0.0 ? stored.volume : 0.0};
                 pairs_.insert(pairs_.end(), values, values + PAIR_VALUES);
-                Where w = {history, &first_flags[i][jj], i, j};
+                Where w = {history, &first_flags[i][jj], law, i, j};
+                where_.push_back(w);
+            }
+        }
+    }
+
+    /* step 1 for the walls: their grains, as pairs (the grain's ID, the wall's key) */
+    void gather_walls(const WallSources &walls)
+    {
+        std::vector<WallSlot> slots;
+        for (size_t k = 0; k < walls.size(); ++k) {
+            walls[k].second->protocol1_slots(slots);
+            for (size_t s = 0; s < slots.size(); ++s) {
+                const WallSlot &slot = slots[s];
+                cb_bridge stored;
+                std::memcpy(&stored, slot.history, sizeof stored);
+                const double values[PAIR_VALUES] = {
+                    (double)atom->tag[slot.i], (double)walls[k].first, slot.r, CB_PLANE,
+                    slot.gap, slot.candidate ? 1.0 : 0.0,
+                    stored.active != 0.0 ? stored.volume : 0.0};
+                pairs_.insert(pairs_.end(), values, values + PAIR_VALUES);
+                Where w = {slot.history, NULL, slot.law, slot.i, -1};
                 where_.push_back(w);
             }
         }
@@ -325,37 +357,45 @@ class Protocol1 : protected LAMMPS_NS::Pointers {
     }
 
     /* step 4: the volumes into this rank's histories, the free liquid cleared */
-    void apply(const cb_law *law, const std::vector<double> &volumes, double *free_liquid)
+    void apply(const std::vector<double> &volumes, double *free_liquid)
     {
         for (size_t k = 0; k < where_.size(); ++k) {
             const Where &w = where_[k];
             const double *p = &pairs_[PAIR_VALUES * k];
             cb_bridge bridge;
             std::memcpy(&bridge, w.history, sizeof bridge);
-            const cb_status status = cb_bridge_set_volume(law, p[2], p[3], volumes[k], &bridge);
+            const cb_status status =
+                cb_bridge_set_volume(w.law, p[2], p[3], volumes[k], &bridge);
             if (status != CB_OK) {
                 char text[400];
-                snprintf(text, sizeof text,
-                         "cohesion model capillary: Protocol 1 could not give %g m^3 to the "
-                         "pair of particles %d and %d (radii %g and %g m, gap %g m): %s",
-                         volumes[k], atom->tag[w.i], atom->tag[w.j], p[2], p[3], p[4],
-                         cb_status_message(status));
+                if (w.j >= 0)
+                    snprintf(text, sizeof text,
+                             "cohesion model capillary: Protocol 1 could not give %g m^3 to the "
+                             "pair of particles %d and %d (radii %g and %g m, gap %g m): %s",
+                             volumes[k], atom->tag[w.i], atom->tag[w.j], p[2], p[3], p[4],
+                             cb_status_message(status));
+                else
+                    snprintf(text, sizeof text,
+                             "cohesion model capillary: Protocol 1 could not give %g m^3 to the "
+                             "bridge of particle %d (radius %g m) and a wall (gap %g m): %s",
+                             volumes[k], atom->tag[w.i], p[2], p[4], cb_status_message(status));
                 error->one(FLERR, text);
             }
             std::memcpy(w.history, &bridge, sizeof bridge);
-            // a bridge keeps its pair's history through re-neighboring
-            if (bridge.active != 0.0)
+            // a bridge keeps its pair's history through re-neighboring (a wall's is per grain)
+            if (w.flags && bridge.active != 0.0)
                 *w.flags |= LIGGGHTS::ContactModels::CONTACT_COHESION_MODEL;
-            else
+            else if (w.flags)
                 *w.flags &= ~LIGGGHTS::ContactModels::CONTACT_COHESION_MODEL;
         }
         for (int i = 0; i < atom->nlocal; ++i) free_liquid[i] = 0.0;
     }
 
     struct Where {
-        double *history;  // the pair's cb_bridge
-        int *flags;       // the pair's contact flags
-        int i, j;
+        double *history;    // the pair's cb_bridge
+        int *flags;         // the pair's contact flags (NULL: a wall's)
+        const cb_law *law;  // the pair's law (a wall's: at the wall's angle, the same)
+        int i, j;           // j -1: a wall
     };
 
     int every_;                  // steps between distributions; 0: at every re-neighboring

@@ -117,12 +117,14 @@ class Protocols {
      * cb_protocol_design_volume). */
     double vmax() const { return vmax_given_ ? std::atof(vmax_.c_str()) : 0.0; }
 
-    /* The start of an updating pass, before the pair loop (collective under Protocol 1). */
+    /* The start of an updating pass, before the pair loop (collective under Protocol 1);
+     * walls: the wet walls whose grains the distributions cover. */
     void begin_pass(const std::vector<cb_law> &laws, const int history_offset,
-                    double *free_liquid, const Reach &reach)
+                    double *free_liquid, const Reach &reach, const WallSources &walls)
     {
         if (protocol1 ? first.due() : start.due(free_liquid))
-            start.set_total(first.distribute(&laws[0], history_offset, free_liquid, reach));
+            start.set_total(
+                first.distribute(&laws[0], history_offset, free_liquid, reach, walls));
         if (!protocol1) start.ask(free_liquid);  // fix capillaryRemove, at a run's setup
         if (protocol3) receivers.begin();
     }

@@ -207,14 +207,15 @@ class LiquidStart : protected LAMMPS_NS::Pointers {
 
     /* In the pass that removes: is the bridge of atoms with these IDs removed? */
     bool removing() const { return removing_; }
-    bool chosen(const int id_i, const int id_j) const
+    bool chosen(const long long id_i, const long long id_j) const
     {
         int chosen = 0;
         const cb_status status = cb_bridge_removal_chosen(fraction_, seed_, id_i, id_j, &chosen);
         if (status != CB_OK) {
             char text[300];
             snprintf(text, sizeof text,
-                     "cohesion model capillary: %s %g (%s %llu) for particles %d and %d: %s",
+                     "cohesion model capillary: %s %g (%s %llu) for particles (or a wall: "
+                     "negative) %lld and %lld: %s",
                      asked_ ? "fix capillaryRemove" : "remove", fraction_,
                      asked_ ? "seed" : "remove_seed", seed_, id_i, id_j,
                      cb_status_message(status));

@@ -13,17 +13,22 @@
  * per triangle for a mesh: restart files keep it).
  *
  * Liquid: the pair_style's.  With liquid fixed the bridge has bridgeVolume and the liquid of a
- * broken bridge leaves, as between grains.  Under Protocols 2 and 3 (primitive walls; `liquid
- * protocol2|3` given to both, the pair_style with `start free`) the wall holds no liquid: the
+ * broken bridge leaves, as between grains.  Under Protocols 1, 2 and 3 (primitive walls;
+ * `liquid protocol1|2|3` given to both) the wall holds no liquid.  Under Protocols 2 and 3 the
  * bridge forms at contact from the grain's free liquid, its share counted with the grain's
  * other new bridges of the step (the pair's model finishes the formations after the walls:
- * capbridge_liggghts_pass.h), its liquid goes back to the grain when it breaks, it is a
- * Protocol 3 receiver of its grain (the wall's key its partner), and the liquid census and
- * the pair's tally (bridgedLiquid, bridgeCount: its one grain end) count it.  The reach is
- * the pair's design volume.  Not in LIGGGHTS yet (LAMMPS's fix capillary/wall has them):
- * Protocol 1 and `start bridges` (a distribution in the pair's pass, before the walls'
- * contacts are known), the removal of bridges, mesh walls (fix contacthistory/mesh copies a
- * contact's history to the coplanar triangle a grain moves onto: the bridge's liquid with it).
+ * capbridge_liggghts_pass.h); under Protocol 1, and at the start of Protocols 2 and 3 with
+ * `start bridges`, the pair's distribution gives it its volume with the pairs' (the wall
+ * hands its grains over as they are then: protocol1_slots; the wall's law must be the
+ * pair's, eqs. 13-14 solving with one).  Its liquid goes back to the grain when it breaks,
+ * it is a Protocol 3 receiver of its grain (the wall's key its partner), and the liquid
+ * census and the pair's tally (bridgedLiquid, bridgeCount: its one grain end) count it.  The
+ * reach is the pair's design volume.  The removal of bridges (keyword remove, fix
+ * capillaryRemove) covers the wall's: the draw of the grain's ID and the wall's key, as
+ * LAMMPS's fix capillary/liquid draws a wall bridge (the first wall's key -1).  Not in
+ * LIGGGHTS yet: mesh walls under the protocols (fix contacthistory/mesh copies a contact's
+ * history to the coplanar triangle a grain moves onto: the bridge's liquid with it; LAMMPS's
+ * fix capillary/wall has region walls).
  *
  * Reach: fix wall/gran calls the model for a grain apart from the wall only while its gap is
  * below (contact_distance_factor - 1) r, so the wall registers the factor of its design
@@ -43,9 +48,12 @@
 #include "comm.h"
 #include "error.h"
 #include "fix_mesh_surface.h"
+#include "fix_property_atom.h"
 #include "fix_wall_gran.h"
+#include "modify.h"
 #include "neighbor.h"
 #include "pointers.h"
+#include "primitive_wall.h"
 #include "property_registry.h"
 #include "update.h"
 
@@ -58,11 +66,11 @@
 
 namespace capbridge_liggghts {
 
-class WallBridges : protected LAMMPS_NS::Pointers {
+class WallBridges : protected LAMMPS_NS::Pointers, public WallSource {
   public:
     explicit WallBridges(LAMMPS_NS::LAMMPS *lmp)
-        : Pointers(lmp), wall_(NULL), history_offset_(-1), ntypes_(0), pass_(NULL), protocol_(false), key_(0),
-          warned_beyond_(false)
+        : Pointers(lmp), wall_(NULL), history_offset_(-1), ntypes_(0), pass_(NULL),
+          protocol_(false), key_(0), warned_beyond_(false), history_(NULL)
     {
     }
 
@@ -97,6 +105,7 @@ class WallBridges : protected LAMMPS_NS::Pointers {
                      wall_types[w], ntypes_);
             error->all(FLERR, text);
         }
+        if (protocol_) connect_distribution(laws, wall_types[0]);
         const double rmin = registry.min_radius(), rmax = registry.max_radius();
         if (!(rmin > 0.0) || !(rmax > 0.0) || rmin > 1e100) return;
         const cb_radius_range radii = {rmin, rmax}, plane = {CB_PLANE, CB_PLANE};
@@ -158,6 +167,12 @@ class WallBridges : protected LAMMPS_NS::Pointers {
         const bool updating = d.computeflag != 0 && (!protocol_ || pass_->open());
         const double r = d.radi;
         if (updating && update->setupflag) setup_state(law, d, gap, bridge, hist);
+        const WallBridge b = {hist, law, d.i, d.itype, d.jtype, key_, r, gap,
+                              {en[0], en[1], en[2]}};
+        if (updating && protocol_ && bridge.active != 0.0 && pass_->removing()) {
+            pass_->wall_removal(b, &bridge);  // (a removed one is marked while it overlaps)
+            std::memcpy(hist, &bridge, sizeof bridge);
+        }
         double capillary = 0.0;
         bool have_force = false;
         if (updating && cb_bridge_held(law, r, CB_PLANE, gap, &bridge, &capillary)) {
@@ -172,10 +187,9 @@ class WallBridges : protected LAMMPS_NS::Pointers {
             std::memcpy(hist, &bridge, sizeof bridge);
             if (protocol_ && change == CB_BRIDGE_RUPTURED) pass_->wall_release(d.i, r, released);
         }
-        const WallBridge b = {hist, law, d.i, d.itype, d.jtype, key_, r, gap,
-                              {en[0], en[1], en[2]}};
-        if (protocol_ && updating && bridge.active == 0.0 && cb_bridge_may_form(&bridge, gap) &&
-            pass_->free_liquid(d.i) > 0.0)
+        // (Protocol 1: no formation at contact, its distributions give the bridges)
+        if (protocol_ && updating && bridge.active == 0.0 && !pass_->distributes() &&
+            cb_bridge_may_form(&bridge, gap) && pass_->free_liquid(d.i) > 0.0)
             pass_->wall_formation(b);
         if (updating && bridge.active != 0.0 &&
             cb_bridge_beyond_reach(gap, design_rupture_[d.itype * (ntypes_ + 1) + d.jtype])) {
@@ -195,7 +209,7 @@ class WallBridges : protected LAMMPS_NS::Pointers {
 
     /* At the init of every run, first: the liquid of the wall's bridges is the pair_style's
      * (pass: the pair's model, NULL when the pair_style has no cohesion capillary), fixed or
-     * its Protocol 2 or 3, whose pass this wall then joins. */
+     * its Protocol 1, 2 or 3, whose pass (and distributions) this wall then joins. */
     void connect_liquid(LiquidPass *pass, const std::string &liquid)
     {
         if (!wall_) error->all(FLERR, "cohesion model capillary: a wall model outside fix "
@@ -224,19 +238,90 @@ class WallBridges : protected LAMMPS_NS::Pointers {
                 "fix capillary/wall has region walls)";
             error->all(FLERR, text.c_str());
         }
-        if (pass->starts_with_distribution()) {
-            const std::string text =
-                std::string("cohesion model capillary in fix ") + wall_->id + ": the pair_style's "
-                "'liquid " + liquid + "' starts with a Protocol 1 distribution ('start bridges', "
-                "its default), which in LIGGGHTS comes before fix wall/gran's contacts are "
-                "known: give the pair_style 'start free' (the bridges then form at contact)";
-            error->all(FLERR, text.c_str());
-        }
         protocol_ = true;
-        key_ = pass_->attach_wall();
+        key_ = pass_->attach_wall(this);
+    }
+
+    /* Protocol 1's distribution (WallSource): the grains fix wall/gran will visit in this
+     * step (the primitive wall's grain list, built in its pre_force before the pair's pass;
+     * at a run's setup, where fix wall/gran builds it only after the pair's pass, built here
+     * as its setup will), those of the wall's group within the distance it calls the model
+     * at (its own test, FixWallGran::post_force_primitive: gap <= 0 or gap < (contact
+     * distance factor - 1) r) or holding a bridge, with their gaps now. */
+    void protocol1_slots(std::vector<WallSlot> &out)
+    {
+        out.clear();
+        LAMMPS_NS::PrimitiveWall *plane = wall_->primitiveWall();
+        double **x = atom->x;
+        const double *radius = atom->radius;
+        if (update->setupflag) plane->buildNeighList(neighbor->skin, x, atom->radius, atom->nlocal);
+        double **history = history_->array_atom;
+        const int *mask = atom->mask, *type = atom->type;
+        const double multiplier = neighbor->contactDistanceFactor - 1.0;
+        int *grains = NULL;
+        const int n = plane->getNeighbors(grains);
+        for (int k = 0; k < n; ++k) {
+            const int i = grains[k];
+            if (!(mask[i] & wall_->groupbit)) continue;
+            double delta[3];
+            const double gap = plane->resolveContact(x[i], radius[i], delta);
+            if (gap > neighbor->cutneighmax) continue;
+            double *hist = &history[i][history_offset_];
+            cb_bridge stored;
+            std::memcpy(&stored, hist, sizeof stored);
+            // (the wall bridge of a removed bridge gets no liquid while its contact lasts)
+            const bool candidate = (gap <= 0.0 || gap < multiplier * radius[i]) &&
+                                   !cb_bridge_removed_in_contact(&stored, gap);
+            if (!candidate && stored.active == 0.0) continue;
+            const WallSlot slot = {hist, slot_laws_[type[i]], i, radius[i], gap, candidate};
+            out.push_back(slot);
+        }
     }
 
   private:
+    /* At connect under the protocols: each grain type's law with this wall and the wall's
+     * contact history (per grain: fix wall/gran's property/atom history_ID); where the
+     * liquid distributes (Protocol 1, start bridges), every such law must be the
+     * distribution's, but for the viscosity, which takes no part in eqs. 13-14. */
+    void connect_distribution(const ReachLaws &laws, const int wall_type)
+    {
+        slot_laws_.assign(ntypes_ + 1, NULL);
+        for (int a = 1; a <= ntypes_; ++a) slot_laws_[a] = laws.of(a, wall_type);
+        const std::string name = std::string("history_") + wall_->id;
+        const int k = modify->find_fix(name.c_str());
+        history_ = k >= 0 ? dynamic_cast<LAMMPS_NS::FixPropertyAtom *>(modify->fix[k]) : NULL;
+        if (!history_)
+            fail("the contact history of a primitive wall (fix property/atom history_ID) "
+                 "was not found (internal)");
+        // LIGGGHTS 3.8.0's Modify::setup sets a fix property/atom made since the last run
+        // (just_created) to its defaults, after the pair's setup pass: it would wipe the
+        // bridges a distribution there gave this wall, their liquid lost.  The history holds
+        // its defaults (zeros) since it was made (its constructor; new atoms get them as they
+        // are created), so the reset does nothing else: it is skipped.
+        history_->just_created = 0;
+        const cb_law *pair = pass_->distribution_law();
+        if (!pair) return;
+        for (int a = 1; a <= ntypes_; ++a) {
+            cb_law wall_law = *slot_laws_[a];
+            wall_law.viscosity = pair->viscosity;
+            wall_law.viscous_min_gap = pair->viscous_min_gap;
+            if (cb_law_same(&wall_law, pair)) continue;
+            char text[900];
+            snprintf(text, sizeof text,
+                     "cohesion model capillary in fix %s: the pair_style's 'liquid %s' "
+                     "distributes the liquid by Protocol 1 (Richefeu 2007 eqs. 13-14: one "
+                     "alpha over all pairs, with one law) over the grains and this wall, but "
+                     "the wall's bridges with atom type %d have another law (contact angle "
+                     "%g degrees, the mean cosine of the type's and the wall type %d's "
+                     "contactAngle, against the pairs' %g; or other law words after 'cohesion "
+                     "capillary'): give the wall's atom type the grains' contactAngle and the "
+                     "pair_style's law words, or use 'start free' under Protocol 2 or 3",
+                     wall_->id, pass_->liquid(), a, slot_laws_[a]->contact_angle * 180.0 / M_PI,
+                     wall_type, pair->contact_angle * 180.0 / M_PI);
+            error->all(FLERR, text);
+        }
+    }
+
     /* every state checked once where it enters (a restart file's), its constants derived */
     void setup_state(const cb_law *law, const LIGGGHTS::ContactModels::SurfacesCloseData &d,
                      const double gap, cb_bridge &bridge, double *hist)
@@ -296,6 +381,8 @@ class WallBridges : protected LAMMPS_NS::Pointers {
     bool protocol_;                       // Protocols 2, 3: the wall joins the pair's pass
     long long key_;                       // this wall's key in the pass (negative)
     bool warned_beyond_;
+    LAMMPS_NS::FixPropertyAtom *history_;   // a primitive wall's contact history, per grain
+    std::vector<const cb_law *> slot_laws_; // per grain type: its law with this wall
 };
 
 } /* namespace capbridge_liggghts */

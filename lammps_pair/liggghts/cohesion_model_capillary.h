@@ -208,11 +208,6 @@ namespace ContactModels {
       if (wall_) {
         // what the wall bridges do not have yet: said, not ignored
         // (no fix made here: this runs inside fix wall/gran's constructor, in Modify::add_fix)
-        if (liquid_ == "protocol1")
-          fail_all("cohesion model capillary in a fix wall/gran takes 'liquid fixed', "
-                   "'protocol2' or 'protocol3', not 'liquid protocol1' (Protocol 1 at walls is "
-                   "LAMMPS's fix capillary/wall's; in LIGGGHTS its distribution, in the pair's "
-                   "pass, comes before fix wall/gran's contacts are known)");
         if (protocols_.given_any())
           fail_all("cohesion model capillary in a fix wall/gran: the keywords every, vmax, "
                    "start, remove and remove_seed are the pair_style's (the wall's bridges "
@@ -275,15 +270,24 @@ namespace ContactModels {
       // (before the walls' models connect, in fix wall/gran's init: they find this model
       // through the fix, for its liquid, its tally, and under Protocols 2, 3 its pass)
       nwalls_ = 0;
+      walls_.clear();
       open_ = false;
       finish_fix_ = capbridge_liggghts::make_finish_fix(modify, error, this);
     }
 
     /* ------------------------------------------ the pass as the walls see it (LiquidPass) */
 
-    long long attach_wall() { return -(++nwalls_); }
+    long long attach_wall(capbridge_liggghts::WallSource *source)
+    {
+      walls_.push_back(std::make_pair(-(++nwalls_), source));
+      return walls_.back().first;
+    }
     const char *liquid() const { return liquid_.c_str(); }
-    bool starts_with_distribution() const { return protocols_.start.bridges; }
+    const cb_law *distribution_law() const
+    {
+      return protocols_.protocol1 || protocols_.start.bridges ? &laws_.laws[0] : NULL;
+    }
+    bool distributes() const { return protocols_.protocol1; }
     double design_volume() const { return reach_.design_volume(); }
     bool open() const { return open_; }
     double free_liquid(const int i) const { return fix_free_->vector_atom[i]; }
@@ -296,6 +300,20 @@ namespace ContactModels {
       check_at(cb_protocol2_release(volume, r, CB_PLANE, &grain, &wall),
                "Protocol 2 release at a wall", i, -1, 0.0, volume);
       formations_.released[i] += grain;
+    }
+
+    bool removing() const { return protocols_.start.removing(); }
+
+    void wall_removal(const capbridge_liggghts::WallBridge &b, cb_bridge *bridge)
+    {
+      const double held = bridge->volume;
+      double volume = 0.0;
+      if (protocols_.start.chosen(atom->tag[b.i], b.key)) {
+        check_at(cb_bridge_remove(b.gap, bridge, &volume), "bridge removal at a wall", b.i, -1,
+                 b.gap, held);
+        wall_release(b.i, b.r, volume);
+      }
+      protocols_.start.count(true, volume, held);  // a wall bridge is on its grain's rank only
     }
 
     void wall_held(const capbridge_liggghts::WallBridge &b, const double volume)
@@ -333,11 +351,8 @@ namespace ContactModels {
                             "was deleted; do not unfix it");
         open_ = true;
         if (counting_) account_.begin(fix_free_->vector_atom);
-        protocols_.begin_pass(laws_.laws, history_offset_, fix_free_->vector_atom, reach_);
-        if (nwalls_ > 0 && protocols_.start.removing())
-          error->all(FLERR, "cohesion model capillary: removing bridges (fix capillaryRemove) "
-                            "while walls hold bridges is not supported in LIGGGHTS yet (LAMMPS's "
-                            "fix capillary/liquid removes wall bridges too)");
+        protocols_.begin_pass(laws_.laws, history_offset_, fix_free_->vector_atom, reach_,
+                              walls_);
         fix_free_->do_forward_comm();
         formations_.begin();
       }
@@ -775,6 +790,7 @@ namespace ContactModels {
     bool updating_;
     bool open_;        // Protocols 2, 3: an updating pass whose formations are not finished
     long long nwalls_; // walls whose models joined the pass in this run (attach_wall)
+    capbridge_liggghts::WallSources walls_;  // their keys and grains, for Protocol 1
     FixCapillaryFinish *finish_fix_;  // ends the pass after the walls when nwalls_ > 0
     bool census_;      // this pass is a census pass (setup, re-neighboring)
     bool counting_;    // this pass is a census of the liquid (Protocol 2: setup, re-neighboring)

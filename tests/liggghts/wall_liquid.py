@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""Wall bridges under Richefeu 2007's Protocols 2 and 3 in LIGGGHTS (issue 19, point 2): the
-wall holds no liquid; the grain's liquid forms the bridge, shared with the grain's other new
-bridges of the step, and comes back at rupture; the liquid is conserved on 1, 2, 3 ranks and
+"""Wall bridges under Richefeu 2007's Protocols 1, 2 and 3 in LIGGGHTS (issue 19, point 2):
+the wall holds no liquid; the grain's liquid forms the bridge (Protocols 2, 3: shared with the
+grain's other new bridges of the step; Protocol 1 and `start bridges`: the distribution gives
+it with the pairs'), and comes back at rupture; the liquid is conserved on 1, 2, 3 ranks and
 across a restart file.
 
 tests/liggghts/in.wall_share, two spheres (radius 1 mm) touching a primitive wall z = 0 and
@@ -16,13 +17,28 @@ each other from the first step, sphere 1 with 2e-11 m^3 of free liquid, sphere 2
     share of it (half: equal radii) goes to its free liquid under Protocol 2 and to its lowest
     bridge, the wall's, under Protocol 3; sphere 2's share forms its own wall bridge (it slides
     on the wall).
+  - Protocol 1, up 0 (the wall at the spheres' 20 degrees): the first distribution gives the
+    three bridges (the pair's, R = sqrt(r1 r2), and each sphere's with the wall, R = r: the
+    core weighs a wall pair as the sphere and its mirror image) a third of the liquid each,
+    Richefeu's eq. 13 for three equal R; once sphere 2 has left the pair's rupture distance,
+    the distributions every 100 steps give each wall bridge half of it;
+  - Protocol 2 with `start bridges`, up 0, the wall made after the liquid was set: the start's
+    distribution at the run's setup gives the three bridges a third each (the wall's new
+    contact history kept through LIGGGHTS's reset of new per-atom properties there); when
+    the pair's bridge breaks, its liquid is the two spheres' free liquid, half each; with
+    `remove 1` all three bridges are removed at the start (the report counts the walls'),
+    their liquid free, and the wall bridges do not form again while their contacts last (the
+    pair's forms again at the step its contact opens to gap 0, as the core's rule has it).
 Each on 1 and 2 ranks (the two spheres owned by two ranks): every value the same to 1e-12.
-tests/liggghts/in.wall_floor, 150 grains falling onto the wall under Protocols 2 and 3:
-the total liquid is 150 nl to 1e-12 relative at every step on 1, 2 and 3 ranks, wall bridges
-form and break; and stopped at half-way into a restart file, read by a second process: the
-same liquid and wall bridges at the restart, the total kept in both halves.
-Refusals, by message: a wall whose liquid is not the pair_style's, Protocol 1 at a wall, a
-mesh under a protocol, the pair_style's `start bridges` with walls.
+tests/liggghts/in.wall_floor, 150 grains falling onto the wall under Protocols 1, 2 and 3 and
+Protocol 2 with `start bridges`: the total liquid is 150 nl to 1e-12 relative at every step
+on 1, 2 and 3 ranks, wall bridges form and break; and stopped at half-way into a restart file,
+read by a second process: the same liquid and wall bridges at the restart, the total kept in
+both halves.
+Refusals, by message: a wall whose liquid is not the pair_style's, a mesh under a protocol, a
+wall whose law is not the pair's where the liquid distributes (the wall's contact angle apart
+from the grains' is refused before, by the pair's own check: the wall's atom type is one of
+the pair_style's).
 
 usage: wall_liquid.py CAPBRIDGE LIGGGHTS_ENV [--workdir DIR]
 """
@@ -72,12 +88,12 @@ def share_run(env, workdir, ranks, **changes):
                             workdir, ranks=ranks, log="log." + name)
     if code != 0:
         lc.fail("in.wall_share (%s): %s" % (name, lc.error_line(log) or log[-1500:]))
-    return [[float(v) for v in row] for row in lc.thermo_rows(log) if len(row) == 8]
+    return [[float(v) for v in row] for row in lc.thermo_rows(log) if len(row) == 9]
 
 
 def shared_at_start(rows, name):
     """Step 0: sphere 1's liquid in two bridges of half of it each, none free."""
-    step, _, _, free1, free2, bridged1, bridged2, walls = rows[0]
+    step, _, _, free1, free2, bridged1, bridged2, walls, _ = rows[0]
     half = 0.5 * LIQUID1
     ok = step == 0 and free1 == 0.0 and free2 == 0.0 and walls == 1.0 and \
         close(bridged1, half + 0.5 * half, LIQUID1) and close(bridged2, 0.5 * half, LIQUID1)
@@ -100,7 +116,7 @@ def pulled_up(capbridge, rows, name):
     volume = 0.5 * LIQUID1
     rupture = cli(capbridge, "rupture", volume)[0]
     worst, checked, after, last_gap, returned = 0.0, 0, 0, 0.0, True
-    for step, z1, fz, free1, _, bridged1, _, walls in rows:
+    for step, z1, fz, free1, _, bridged1, _, walls, _ in rows:
         gap = z1 - R
         if gap <= 0.0:
             continue
@@ -129,7 +145,7 @@ def pulled_apart(rows, protocol, name):
     """The pair's bridge broken: sphere 1's half of it free (Protocol 2) or in its wall
     bridge (Protocol 3); sphere 2's half in its own new wall bridge."""
     quarter = 0.25 * LIQUID1
-    step, _, _, free1, free2, bridged1, bridged2, walls = rows[-1]
+    step, _, _, free1, free2, bridged1, bridged2, walls, _ = rows[-1]
     if protocol == "protocol2":
         expected = (quarter, 0.0, 0.5 * LIQUID1, quarter)
     else:
@@ -165,10 +181,119 @@ def share(capbridge, env, workdir):
     return ok
 
 
-def floor_run(env, workdir, protocol, ranks, part, restart=""):
-    name = "floor-%s-%d-part%d" % (protocol, ranks, part)
+def distributed(capbridge, env, workdir):
+    """Protocol 1: the liquid in thirds, then in halves once the pair is out of reach."""
+    runs = {ranks: share_run(env, workdir, ranks, liquid="protocol1", up=0, theta_wall=20.0,
+                             pair_keyword="every", pair_value=100)
+            for ranks in (1, 2)}
+    rows, name = runs[1], "protocol1, pulled apart"
+    third, half = LIQUID1 / 3.0, 0.5 * LIQUID1
+    # the liquid is set after a `run 0`, whose setup made the first distribution (of none):
+    # the next is at step 100 (every 100)
+    before = all(r[7] == 0.0 and r[3] == LIQUID1 for r in rows if r[0] < 100)
+    first = next(r for r in rows if r[0] == 100)
+    last = rows[-1]
+    ok = before and first[3] == 0.0 and first[4] == 0.0 and first[7] == 2.0 and \
+        close(first[8], 2.0 * third, LIQUID1) and close(first[5], half, LIQUID1) and \
+        close(first[6], half, LIQUID1)
+    print("%s: the liquid free until the distribution at step 100, which gives the pair's bridge "
+          "and the two wall bridges a third of it each (wall bridges %d holding %.6g m^3, "
+          "bridged %.6g and %.6g, free %g, %g) %s"
+          % (name, first[7], first[8], first[5], first[6], first[3], first[4],
+             "ok" if ok else "FAIL"))
+    # sphere 2 moved by vz t along x from the gap -1e-7 + 1e-7 (its start): beyond the pair's
+    # rupture distance for the half it would receive, so the pair is no candidate at the end
+    gap = SHARE["vz"] * 1e-6 * last[0] - 1e-7
+    rupture = float(subprocess.run(
+        [capbridge, "rupture", "willett", "theta", "20", "--r1", repr(R), "--r2", repr(R),
+         "--volume", repr(half)], stdout=subprocess.PIPE, universal_newlines=True,
+        check=True).stdout.split()[1].split(",")[0])
+    halves = last[7] == 2.0 and close(last[8], LIQUID1, LIQUID1) and \
+        close(last[5], half, LIQUID1) and close(last[6], half, LIQUID1) and \
+        last[3] == 0.0 and last[4] == 0.0 and gap > rupture
+    print("%s: at the end (the pair's gap %.6g m, beyond the rupture distance %.6g m of the half) "
+          "the two wall bridges hold half of the liquid each (%.6g m^3 in all; bridged %.6g and "
+          "%.6g, free %g, %g) %s" % (name, gap, rupture, last[8], last[5], last[6], last[3],
+                                     last[4], "ok" if halves else "FAIL"))
+    ok = halves and conserved(rows, LIQUID1, name) and ok
+    same = len(runs[2]) == len(rows) and all(
+        close(a, b, max(abs(a), 1e-30)) for r1, r2 in zip(rows, runs[2]) for a, b in zip(r1, r2))
+    print("%s on 2 ranks (one sphere each): every value as on 1 rank %s"
+          % (name, "ok" if same else "FAIL"))
+    return same and ok
+
+
+def started(env, workdir):
+    """Protocol 2 with start bridges: thirds at the setup of the run (the wall made just before
+    it), then the pair's bridge broken and its liquid free, half to each sphere."""
+    runs = {ranks: share_run(env, workdir, ranks, up=0, theta_wall=20.0, start="bridges")
+            for ranks in (1, 2)}
+    rows, name = runs[1], "protocol2 start bridges, pulled apart"
+    third = LIQUID1 / 3.0
+    first, last = rows[0], rows[-1]
+    ok = first[0] == 0 and first[3] == 0.0 and first[4] == 0.0 and first[7] == 2.0 and \
+        close(first[8], 2.0 * third, LIQUID1) and close(first[5], 0.5 * LIQUID1, LIQUID1) and \
+        close(first[6], 0.5 * LIQUID1, LIQUID1)
+    print("%s: at the first step (the setup of the wall's first run) the pair's bridge and the "
+          "two wall bridges a third of the liquid each (wall bridges %d holding %.6g m^3, "
+          "bridged %.6g and %.6g, free %g, %g) %s"
+          % (name, first[7], first[8], first[5], first[6], first[3], first[4],
+             "ok" if ok else "FAIL"))
+    broken = last[7] == 2.0 and close(last[8], 2.0 * third, LIQUID1) and \
+        all(close(v, 0.5 * third, LIQUID1) for v in (last[3], last[4])) and \
+        all(close(v, third, LIQUID1) for v in (last[5], last[6]))
+    print("%s: at the end the pair's bridge broken, half of its liquid free on each sphere "
+          "(free %.6g and %.6g m^3), the wall bridges kept (%.6g m^3) %s"
+          % (name, last[3], last[4], last[8], "ok" if broken else "FAIL"))
+    ok = broken and conserved(rows, LIQUID1, name) and ok
+    same = len(runs[2]) == len(rows) and all(
+        close(a, b, max(abs(a), 1e-30)) for r1, r2 in zip(rows, runs[2]) for a, b in zip(r1, r2))
+    print("%s on 2 ranks (one sphere each): every value as on 1 rank %s"
+          % (name, "ok" if same else "FAIL"))
+    return same and ok
+
+
+def removed(env, workdir):
+    """start bridges with remove 1: the three bridges removed at the start, their liquid the
+    spheres' free liquid; the wall bridges, in contact, do not form again."""
+    ok = True
+    for ranks in (1, 2):
+        name = "protocol2 start bridges remove 1, %d rank(s)" % ranks
+        run = dict(SHARE, up=0, theta_wall=20.0, start="bridges", remove_key="remove",
+                   remove_value=1, seed_key="remove_seed", seed_value=7723)
+        code, log = lc.liggghts(env, os.path.join(lc.HERE, "in.wall_share"),
+                                [(k, v if isinstance(v, str) else repr(v))
+                                 for k, v in run.items()],
+                                workdir, ranks=ranks, log="log.removed-%d" % ranks)
+        if code != 0:
+            lc.fail("in.wall_share (%s): %s" % (name, lc.error_line(log) or log[-1500:]))
+        rows = [[float(v) for v in row] for row in lc.thermo_rows(log) if len(row) == 9]
+        report = "removed 3 of 3 bridges" in log
+        first = rows[0]
+        free = first[5] == 0.0 and first[6] == 0.0 and close(first[3], 0.5 * LIQUID1, LIQUID1) \
+            and close(first[4], 0.5 * LIQUID1, LIQUID1)
+        walls = all(r[7] == 0.0 and r[8] == 0.0 for r in rows)
+        this = report and free and walls and len(rows) == SHARE["nsteps"] + 1
+        print("%s: the report says 3 of 3 bridges removed (the two wall bridges with the "
+              "pair's); at step 0 no bridge, half of the liquid free on each sphere; no wall "
+              "bridge at any step (their contacts last) %s"
+              % (name, "ok" if this else "FAIL: " + (lc.error_line(log) or "")))
+        ok = conserved(rows, LIQUID1, name) and this and ok
+    return ok
+
+
+# the floor's liquid words: each protocol, and Protocol 2 starting with a distribution
+FLOOR_CASES = (("protocol1", "every", "0", 0.0), ("protocol2", "start", "free", 30.0),
+               ("protocol3", "start", "free", 30.0), ("protocol2", "start", "bridges", 0.0))
+
+
+def floor_run(env, workdir, case, ranks, part, restart=""):
+    protocol, keyword, value, theta_wall = case
+    name = "floor-%s-%s-%d-part%d" % (protocol, value, ranks, part)
     code, log = lc.liggghts(env, os.path.join(lc.HERE, "in.wall_floor"),
-                            [("px", ranks), ("liquid", protocol), ("nsteps", FLOOR_STEPS),
+                            [("px", ranks), ("liquid", protocol), ("pair_keyword", keyword),
+                             ("pair_value", value),
+                             ("theta_wall", theta_wall), ("nsteps", FLOOR_STEPS),
                              ("part", part), ("restart", restart or "none")],
                             workdir, ranks=ranks, log="log." + name)
     if code != 0:
@@ -189,19 +314,29 @@ def floor_conserved(rows, name, steps):
 
 def floor(env, workdir):
     ok = True
-    for protocol in ("protocol2", "protocol3"):
+    for case in FLOOR_CASES:
+        words = "%s %s %s" % case[:3]
         for ranks in (1, 2, 3):
-            ok = floor_conserved(floor_run(env, workdir, protocol, ranks, 0),
-                                 "floor, %s, %d rank(s)" % (protocol, ranks), FLOOR_STEPS) and ok
+            ok = floor_conserved(floor_run(env, workdir, case, ranks, 0),
+                                 "floor, %s, %d rank(s)" % (words, ranks), FLOOR_STEPS) and ok
         for ranks in (1, 2):
-            restart = os.path.join(workdir, "floor-%s-%d.restart" % (protocol, ranks))
-            first = floor_run(env, workdir, protocol, ranks, 1, restart)
-            second = floor_run(env, workdir, protocol, ranks, 2, restart)
-            name = "floor, %s, %d rank(s), restarted" % (protocol, ranks)
-            kept = close(first[-1][1], second[0][1], FLOOR_TOTAL) and \
-                close(first[-1][2], second[0][2], FLOOR_TOTAL) and first[-1][4] == second[0][4]
-            print("%s: the second process starts with the liquid and the %d wall bridges the "
-                  "first ended with %s" % (name, second[0][4], "ok" if kept else "FAIL"))
+            restart = os.path.join(workdir, "floor-%s-%s-%d.restart"
+                                   % (case[0], case[2], ranks))
+            first = floor_run(env, workdir, case, ranks, 1, restart)
+            second = floor_run(env, workdir, case, ranks, 2, restart)
+            name = "floor, %s, %d rank(s), restarted" % (words, ranks)
+            if case[0] == "protocol1":
+                # the first run after read_restart distributes (all liquid into bridges)
+                kept = close(first[-1][3], second[0][3], FLOOR_TOTAL) and second[0][1] == 0.0
+                print("%s: the second process starts with the first's liquid, distributed at "
+                      "its setup (free %g, %d wall bridges) %s"
+                      % (name, second[0][1], second[0][4], "ok" if kept else "FAIL"))
+            else:
+                kept = close(first[-1][1], second[0][1], FLOOR_TOTAL) and \
+                    close(first[-1][2], second[0][2], FLOOR_TOTAL) and \
+                    first[-1][4] == second[0][4]
+                print("%s: the second process starts with the liquid and the %d wall bridges "
+                      "the first ended with %s" % (name, second[0][4], "ok" if kept else "FAIL"))
             ok = kept and floor_conserved(first + second[1:], name, FLOOR_STEPS) and ok
     return ok
 
@@ -224,12 +359,15 @@ def refusals(env, workdir):
     ok = refused(env, workdir, "wall liquid fixed beside the pair's protocol2",
                  "'liquid fixed' must be the pair_style's liquid, 'liquid protocol2'",
                  wall_liquid="fixed")
-    ok = refused(env, workdir, "wall protocol1", "not 'liquid protocol1'",
-                 liquid="protocol1", wall_liquid="protocol1") and ok
     ok = refused(env, workdir, "mesh wall under protocol2", "takes primitive walls only",
                  mesh=1, stl=stl) and ok
-    ok = refused(env, workdir, "walls with start bridges", "give the pair_style 'start free'",
-                 start="bridges", theta_wall=20.0) and ok
+    ok = refused(env, workdir, "protocol1, the wall with another law",
+                 "the wall's bridges with atom type 1 have another law",
+                 liquid="protocol1", pair_keyword="every", pair_value=0, theta_wall=20.0,
+                 wall_liquid="protocol1 overlap none") and ok
+    ok = refused(env, workdir, "start bridges, the wall with another law",
+                 "the wall's bridges with atom type 1 have another law", start="bridges",
+                 theta_wall=20.0, wall_liquid="protocol2 overlap none") and ok
     ok = refused(env, workdir, "wall with vmax", "are the pair_style's",
                  wall_liquid="protocol2 vmax 1e-11") and ok
     return ok
@@ -244,6 +382,9 @@ def main():
     env, workdir = lc.start(args.env, args.workdir, "wall_liquid")
     capbridge = os.path.abspath(args.capbridge)
     ok = share(capbridge, env, workdir)
+    ok = distributed(capbridge, env, workdir) and ok
+    ok = started(env, workdir) and ok
+    ok = removed(env, workdir) and ok
     ok = floor(env, workdir) and ok
     ok = refusals(env, workdir) and ok
     print("wall bridges under the protocols: %s (files in %s)"

@@ -14,11 +14,17 @@ endforeach()
 # w is in percent of the grains' mass (Richefeu 2007 writes w = 2 %); the decks took a mass
 # fraction until December 2026, so a w below 0.2 (the paper's range is 0.5-12 %) is refused
 # as that old reading, naming the value to give; the range and the packing seed are checked
-# by name. Each run stops at the deck's checks, before any atom exists.
+# by name. Each run stops at the deck's checks, before any atom exists. After the message:
+# a further variable and its value, if any.
 function(uniaxial_refusal engine name var value message)
+  set(more)
+  if(ARGC EQUAL 7)
+    set(more -var ${ARGV5} ${ARGV6})
+  endif()
   add_test(NAME scene_uniaxial_${engine}_refuses_${name}
            COMMAND ${PROJECT_SOURCE_DIR}/scripts/scene.sh ${engine} uniaxial -np 1 -size smoke
-                   -out ${CMAKE_CURRENT_BINARY_DIR}/scenes/uniaxial_refusals/${engine}_${name} -var ${var} ${value})
+                   -out ${CMAKE_CURRENT_BINARY_DIR}/scenes/uniaxial_refusals/${engine}_${name} -var ${var} ${value}
+                   ${more})
   set_tests_properties(scene_uniaxial_${engine}_refuses_${name} PROPERTIES
     LABELS "scenes" TIMEOUT 120 PASS_REGULAR_EXPRESSION "${message}"
     ENVIRONMENT "CAPBRIDGE_SKIP_CONFIGURE=1;CAPBRIDGE_PLUGIN=$<TARGET_FILE:capbridgeplugin>")
@@ -35,6 +41,8 @@ endforeach()
 # start free is Protocols 2 and 3's (Protocol 1 distributes the liquid anyway)
 uniaxial_refusal(lammps start_protocol1 start free
   "uniaxial: start free needs protocol2 or protocol3, not protocol1")
-# LIGGGHTS's wet plate needs protocol2 or protocol3 with start free (no Protocol 1 at its walls)
-uniaxial_refusal(liggghts plate_protocol1 plate wet
-  "plate wet \\(dry; wet with protocol2 or protocol3, start free, not dry yes\\): a Label-not-found error right after this line means a value not allowed[\r\n]+ERROR: Label wasn't found")
+# LIGGGHTS's wet plate needs a protocol (a fixed volume would make and destroy the liquid the
+# grains hold)
+uniaxial_refusal(liggghts plate_fixed plate wet
+  "plate wet \\(dry; wet with protocol1, protocol2 or protocol3, not dry yes\\): a Label-not-found error right after this line means a value not allowed[\r\n]+ERROR: Label wasn't found"
+  protocol fixed)
