@@ -13,7 +13,7 @@
 #   w = 1 %, the middle sigma, next to its all-bonds run.
 #   -seeds: every run once per packing (default "0"); seed 0 is the deck's own seed and the run
 #   name above, seed k adds -seedk to it and gives the deck seed 5871 + k (LAMMPS) or the k-th
-#   prime after its 15485863 (LIGGGHTS takes primes), k = 0..5.
+#   prime after its 15485863 that the deck does not use itself (LIGGGHTS takes distinct primes), k = 0..5.
 # Outputs: out/direct_shear/study-SIZE/<engine>-p<protocol>-<bonds>-s<sigma>-w<w>/ (one run each),
 #   out/direct_shear/study-SIZE/post/ (post.py), copied as above (-nocopy: not).
 # Environment: CAPBRIDGE_LOCK=FILE runs every engine under `flock FILE` (one heavy run at a time on a
@@ -23,7 +23,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
 size=default np=2 engines="lammps liggghts" sigmas="200 500 800" ws="0 0.1 0.5 1 2" lammps_protocols="1 2" half=1 copy=1
 seeds=0
-liggghts_primes=(15485863 15485867 15485917 15485927 15485933 15485941)
+liggghts_primes=(15485863 15485917 15485927 15485933 15485941 15485959)  # not 15485867: the deck's template seed (LIGGGHTS wants all seeds distinct)
 usage() { sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 while [ $# -gt 0 ]; do
   case $1 in
