@@ -65,6 +65,21 @@ inline LAMMPS_NS::FixPropertyAtom *internal_fix(LAMMPS_NS::Modify *modify, const
     return static_cast<LAMMPS_NS::FixPropertyAtom *>(fix);
 }
 
+/* LIGGGHTS sets the default values of a fix property/atom created since the last run in
+ * Modify::setup, i.e. after the setup force pass, where the model may already have written
+ * it (Protocol 2's free liquid taken, Protocol 1's bridges given to a new wall's contact
+ * history).  Do the same initialisation now, before that pass (the condition is
+ * Modify::setup's), so that the reset there does not undo the pass. */
+inline void initialise_now(LAMMPS_NS::Atom *atom, LAMMPS_NS::Fix *fix)
+{
+    if (fix->recent_restart || !fix->just_created || !fix->create_attribute) return;
+    fix->just_created = 0;
+    fix->pre_set_arrays();
+    const int *mask = atom->mask;
+    for (int i = 0; i < atom->nlocal; ++i)
+        if (mask[i] & fix->groupbit) fix->set_arrays(i);
+}
+
 class LiquidAccount : protected LAMMPS_NS::Pointers {
   public:
     explicit LiquidAccount(LAMMPS_NS::LAMMPS *lmp)

@@ -42,6 +42,7 @@
 
 #include "atom.h"
 #include "capbridge.h"
+#include "capbridge_liggghts_liquid.h"
 #include "capbridge_liggghts_pass.h"
 #include "capbridge_liggghts_reach.h"
 #include "contact_interface.h"
@@ -293,12 +294,9 @@ class WallBridges : protected LAMMPS_NS::Pointers, public WallSource {
         if (!history_)
             fail("the contact history of a primitive wall (fix property/atom history_ID) "
                  "was not found (internal)");
-        // LIGGGHTS 3.8.0's Modify::setup sets a fix property/atom made since the last run
-        // (just_created) to its defaults, after the pair's setup pass: it would wipe the
-        // bridges a distribution there gave this wall, their liquid lost.  The history holds
-        // its defaults (zeros) since it was made (its constructor; new atoms get them as they
-        // are created), so the reset does nothing else: it is skipped.
-        history_->just_created = 0;
+        // a wall made since the last run: its history's reset in Modify::setup would wipe the
+        // bridges the pair's setup distribution gives it, their liquid lost
+        initialise_now(atom, history_);
         const cb_law *pair = pass_->distribution_law();
         if (!pair) return;
         for (int a = 1; a <= ntypes_; ++a) {

@@ -64,6 +64,7 @@ COHESION_MODEL(COHESION_CAPILLARY,capillary,9)
 #include "contact_models.h"
 #include "cohesion_model_base.h"
 #include "capbridge_liggghts_settings.h"
+#include "capbridge_liggghts_tally.h"
 #include "capbridge_liggghts_checks.h"
 #include "capbridge_liggghts_formations.h"
 #include "capbridge_liggghts_laws.h"
@@ -130,8 +131,6 @@ namespace ContactModels {
       bridge_volume_(NULL),
       ntypes_(0),
       fix_free_(NULL),
-      fix_bridged_(NULL),
-      fix_count_(NULL),
       formations_(lmp),
       updating_(false),
       open_(false),
@@ -319,7 +318,7 @@ namespace ContactModels {
     void wall_held(const capbridge_liggghts::WallBridge &b, const double volume)
     {
       if (counting_) account_.add_bridge(true, volume);  // all of it: its one grain's
-      if (tally_) tally_wall(b.i, volume, 1.0);
+      if (tally_) per_atom_tally_.wall(b.i, volume, 1.0);
       if (protocols_.protocol3) protocols_.receivers.offer_wall(b);
     }
 
@@ -356,11 +355,7 @@ namespace ContactModels {
         fix_free_->do_forward_comm();
         formations_.begin();
       }
-      if (tally_) {
-        double *bridged = fix_bridged_->vector_atom;
-        double *count = fix_count_->vector_atom;
-        for (int k = 0; k < nall; ++k) bridged[k] = count[k] = 0.0;
-      }
+      if (tally_) per_atom_tally_.begin(nall);
     }
 
     void endPass(SurfacesIntersectData &, ForceData &, ForceData &)
@@ -512,7 +507,8 @@ namespace ContactModels {
       }
       if (updating_ && bridge.active != 0.0 && reach_.beyond(d.itype, d.jtype, gap))
         rupture_beyond_reach(bridge, hist, ra, rb, swap, d, gap);
-      if (updating_ && tally_ && bridge.active != 0.0) tally(i, j_local ? j : -1, bridge.volume);
+      if (updating_ && tally_ && bridge.active != 0.0)
+        per_atom_tally_.pair(i, j_local ? j : -1, bridge.volume);
       if (updating_ && protocols_.protocol3 && bridge.active != 0.0)
         protocols_.receivers.offer(d, hist, law, ra, rb, gap, en[2]);
 
@@ -599,11 +595,11 @@ namespace ContactModels {
     {
       if (c.j < 0) {  // at a wall: all its liquid is its grain's
         if (counting_) account_.add_bridge(true, volume);
-        if (tally_) tally_wall(c.i, volume, 1.0);
+        if (tally_) per_atom_tally_.wall(c.i, volume, 1.0);
         return;
       }
       const bool j_local = c.j < atom->nlocal;
-      if (tally_) tally(c.i, j_local ? c.j : -1, volume);
+      if (tally_) per_atom_tally_.pair(c.i, j_local ? c.j : -1, volume);
       census_bridge(c.itype, c.jtype, j_local, volume);
     }
 
@@ -628,8 +624,8 @@ namespace ContactModels {
         const bool j_local = wall || b.j < atom->nlocal;
         if (counting_) account_.add_bridge(j_local, added);
         if (timing_ && !wall) timestep_.add_bridge(b.itype, b.jtype, volume);
-        if (tally_ && wall) tally_wall(b.i, added, 0.0);  // liquid, no new bridge
-        else if (tally_) tally(b.i, j_local ? b.j : -1, added, 0.0);
+        if (tally_ && wall) per_atom_tally_.wall(b.i, added, 0.0);  // liquid, no new bridge
+        else if (tally_) per_atom_tally_.pair(b.i, j_local ? b.j : -1, added, 0.0);
       }
     }
 
@@ -646,26 +642,6 @@ namespace ContactModels {
       j_forces.delta_F[0] -= fx;
       j_forces.delta_F[1] -= fy;
       j_forces.delta_F[2] -= fz;
-    }
-
-    /* Per-atom output: half of every bridge's liquid and one count per bridge end. */
-    void tally(const int i, const int j, const double volume, const double ends = 1.0)
-    {
-      double *bridged = fix_bridged_->vector_atom;
-      double *count = fix_count_->vector_atom;
-      bridged[i] += 0.5 * volume;
-      count[i] += ends;
-      if (j >= 0) {
-        bridged[j] += 0.5 * volume;
-        count[j] += ends;
-      }
-    }
-
-    /* A wall bridge in the per-atom output: all its liquid is its grain's, one end. */
-    void tally_wall(const int i, const double volume, const double ends)
-    {
-      fix_bridged_->vector_atom[i] += volume;
-      fix_count_->vector_atom[i] += ends;
     }
 
     /* ---------------------------------------------------------------- errors */
@@ -720,24 +696,7 @@ namespace ContactModels {
     void connect_internal_fixes()
     {
       if (per_atom_liquid_) formations_.connect();
-      if (tally_) {
-        fix_bridged_ = capbridge_liggghts::internal_fix(modify, "bridgedLiquid", "no");
-        fix_count_ = capbridge_liggghts::internal_fix(modify, "bridgeCount", "no");
-      }
-    }
-
-    /* LIGGGHTS sets the default values of a fix property/atom created since the last
-     * run in Modify::setup, i.e. after the setup force pass; Protocol 2 may already
-     * have taken free liquid in that pass. Do the same initialisation now, before it
-     * (the condition is Modify::setup's). */
-    void initialise_now(Fix *fix)
-    {
-      if (fix->recent_restart || !fix->just_created || !fix->create_attribute) return;
-      fix->just_created = 0;
-      fix->pre_set_arrays();
-      const int *mask = atom->mask;
-      for (int i = 0; i < atom->nlocal; ++i)
-        if (mask[i] & fix->groupbit) fix->set_arrays(i);
+      if (tally_) per_atom_tally_.connect(modify);
     }
 
     void connect_per_atom()
@@ -746,7 +705,7 @@ namespace ContactModels {
         fix_free_ = static_cast<FixPropertyAtom *>(modify->find_fix_property(
             "freeLiquid", "property/atom", "scalar", 0, 0,
             "cohesion model capillary (liquid protocol1, protocol2, protocol3)"));
-        initialise_now(fix_free_);
+        capbridge_liggghts::initialise_now(atom, fix_free_);
         if (fix_free_->comm_forward < 1)
           error->all(FLERR, "cohesion model capillary: fix property/atom freeLiquid must be "
                             "communicated to ghost atoms: 'fix ID all property/atom freeLiquid "
@@ -775,6 +734,7 @@ namespace ContactModels {
     std::string tally_word_;  // on/off
     std::string viscous_word_;  // on/off: the bridges' viscous force (ViscousForce)
     bool tally_;
+    capbridge_liggghts::Tally per_atom_tally_;  // tally on: bridgedLiquid, bridgeCount
     bool per_atom_liquid_;  // Protocols 1, 2, 3: the liquid in freeLiquid and the bridges
     cb_model model_;
     // properties
@@ -785,7 +745,7 @@ namespace ContactModels {
     // laws: one per distinct contact angle
     capbridge_liggghts::PairLaws laws_;
     // per-atom data
-    FixPropertyAtom *fix_free_, *fix_bridged_, *fix_count_;
+    FixPropertyAtom *fix_free_;
     capbridge_liggghts::Formations formations_;  // Protocols 2, 3: this pass's new bridges
     bool updating_;
     bool open_;        // Protocols 2, 3: an updating pass whose formations are not finished

@@ -65,9 +65,11 @@ FLOOR_TOTAL = 150 * 1e-12
 FLOOR_STEPS = 3000
 
 
-def cli(capbridge, command, volume, *extra):
-    words = [capbridge, command, "willett", "theta", THETA, "--r1", repr(R), "--plane",
-             "--volume", repr(volume)] + list(extra)
+def cli(capbridge, command, volume, *extra, theta=THETA, second=("--plane",)):
+    """The core's number for the sphere of radius R and a wall (second: the plane), or
+    another sphere (second=("--r2", R))."""
+    words = [capbridge, command, "willett", "theta", theta, "--r1", repr(R)] + list(second) + \
+        ["--volume", repr(volume)] + list(extra)
     result = subprocess.run(words, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             universal_newlines=True)
     lines = result.stdout.split()
@@ -160,6 +162,16 @@ def pulled_apart(rows, protocol, name):
     return ok
 
 
+def same_on_two_ranks(runs, name):
+    """Every value of the 2-rank run (one sphere per rank) as on 1 rank, to 1e-12."""
+    rows = runs[1]
+    same = len(runs[2]) == len(rows) and all(
+        close(a, b, max(abs(a), 1e-30)) for r1, r2 in zip(rows, runs[2]) for a, b in zip(r1, r2))
+    print("%s on 2 ranks (one sphere each): every value as on 1 rank %s"
+          % (name, "ok" if same else "FAIL"))
+    return same
+
+
 def share(capbridge, env, workdir):
     ok = True
     for protocol in ("protocol2", "protocol3"):
@@ -172,12 +184,7 @@ def share(capbridge, env, workdir):
             ok = conserved(rows, LIQUID1, name) and ok
             ok = (pulled_up(capbridge, rows, name) if up else
                   pulled_apart(rows, protocol, name)) and ok
-            same = len(runs[2]) == len(rows) and all(
-                close(a, b, max(abs(a), 1e-30)) for r1, r2 in zip(rows, runs[2])
-                for a, b in zip(r1, r2))
-            print("%s on 2 ranks (one sphere each): every value as on 1 rank %s"
-                  % (name, "ok" if same else "FAIL"))
-            ok = same and ok
+            ok = same_on_two_ranks(runs, name) and ok
     return ok
 
 
@@ -204,10 +211,7 @@ def distributed(capbridge, env, workdir):
     # sphere 2 moved by vz t along x from the gap -1e-7 + 1e-7 (its start): beyond the pair's
     # rupture distance for the half it would receive, so the pair is no candidate at the end
     gap = SHARE["vz"] * 1e-6 * last[0] - 1e-7
-    rupture = float(subprocess.run(
-        [capbridge, "rupture", "willett", "theta", "20", "--r1", repr(R), "--r2", repr(R),
-         "--volume", repr(half)], stdout=subprocess.PIPE, universal_newlines=True,
-        check=True).stdout.split()[1].split(",")[0])
+    rupture = cli(capbridge, "rupture", half, theta="20", second=("--r2", repr(R)))[0]
     halves = last[7] == 2.0 and close(last[8], LIQUID1, LIQUID1) and \
         close(last[5], half, LIQUID1) and close(last[6], half, LIQUID1) and \
         last[3] == 0.0 and last[4] == 0.0 and gap > rupture
@@ -216,11 +220,7 @@ def distributed(capbridge, env, workdir):
           "%.6g, free %g, %g) %s" % (name, gap, rupture, last[8], last[5], last[6], last[3],
                                      last[4], "ok" if halves else "FAIL"))
     ok = halves and conserved(rows, LIQUID1, name) and ok
-    same = len(runs[2]) == len(rows) and all(
-        close(a, b, max(abs(a), 1e-30)) for r1, r2 in zip(rows, runs[2]) for a, b in zip(r1, r2))
-    print("%s on 2 ranks (one sphere each): every value as on 1 rank %s"
-          % (name, "ok" if same else "FAIL"))
-    return same and ok
+    return same_on_two_ranks(runs, name) and ok
 
 
 def started(env, workdir):
@@ -246,11 +246,7 @@ def started(env, workdir):
           "(free %.6g and %.6g m^3), the wall bridges kept (%.6g m^3) %s"
           % (name, last[3], last[4], last[8], "ok" if broken else "FAIL"))
     ok = broken and conserved(rows, LIQUID1, name) and ok
-    same = len(runs[2]) == len(rows) and all(
-        close(a, b, max(abs(a), 1e-30)) for r1, r2 in zip(rows, runs[2]) for a, b in zip(r1, r2))
-    print("%s on 2 ranks (one sphere each): every value as on 1 rank %s"
-          % (name, "ok" if same else "FAIL"))
-    return same and ok
+    return same_on_two_ranks(runs, name) and ok
 
 
 def removed(env, workdir):
