@@ -6,9 +6,15 @@
 # 2026-12-07: Debian's LAMMPS (4Feb2025) scales the classic `hooke/history` wall's
 # tangential spring by the contact radius (k_t a, a = sqrt(R delta) ~ 4 um here), so that
 # wall barely grips (v(t*/2) = 0.999 v0); upstream LAMMPS has since fixed it.  The decks use
-# the `granular` wall syntax, which this test holds to the analytic values; the classic
+# the `granular` wall syntax.  The test takes the uniaxial deck's floor (its fix command of
+# the compression) from the deck itself and holds it to the analytic values; the classic
 # wall is run and its figure printed, not asserted.
 . "$(dirname "$0")/lib.sh" "$@"
+
+deck=$(dirname "$0")/../../inputs/uniaxial/in.lammps
+grep '^fix  *floor all wall/gran .* zplane 0.0 NULL$' "$deck" | tail -n 1 > "$TMP/floor.lammps"
+[ -s "$TMP/floor.lammps" ] || { fail "no floor (fix floor all wall/gran ... zplane 0.0 NULL) in $deck"; finish; exit; }
+echo "the deck's floor: $(cat "$TMP/floor.lammps")"
 
 # check LOG LABEL: v(t*/2) within 2 % of 6/7 v0 and the rolling mean within 1 % of 5/7 v0
 check() {
@@ -28,8 +34,8 @@ check() {
     }' || fail "$2: the wall friction is not Coulomb's (see above)"
 }
 
-for wall in granular classic; do
-    lmp 1 "$TMP/$wall.log" -in "$DECKS/in.wall_friction" -var wall $wall ||
+for wall in deck classic; do
+    lmp 1 "$TMP/$wall.log" -in "$DECKS/in.wall_friction" -var wall $wall -var floor "$TMP/floor.lammps" ||
         { fail "$wall: LAMMPS failed (see $TMP/$wall.log)"; continue; }
     check "$TMP/$wall.log" $wall
 done
