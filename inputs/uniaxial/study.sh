@@ -4,9 +4,10 @@
 # and 4 %, Protocol 2: LAMMPS fix capillary/liquid remove 0.5, LIGGGHTS the model's remove
 # 0.5, both with the draw of seed 7723), and dry; then post.py.
 # w is in percent of the grains' mass, as the decks take it (-var w 2 = 2 %).
-# Usage: inputs/uniaxial/study.sh [-seed N] [smoke|default|paper] [lammps] [liggghts]
+# Usage: inputs/uniaxial/study.sh [-seed N] [-nocopy] [smoke|default|paper] [lammps] [liggghts]
 #   (default: smoke, both engines). Writes out/uniaxial/study-SIZE/ and copies the CSV and PNG
-#   files to docs/results/uniaxial/ (SIZE in their names). With CAPBRIDGE_LOCK=FILE every run
+#   files to docs/results/uniaxial/ (SIZE in their names; -nocopy: not, for a study whose
+#   results go to a page of their own). With CAPBRIDGE_LOCK=FILE every run
 #   holds `flock FILE` (one heavy run at a time on a machine shared by several jobs); a run is
 #   skipped when its end.dump exists already (delete the run directory to redo it).
 #   -seed N: every run gets -var seed N, another packing (without it each deck's own seed:
@@ -14,19 +15,21 @@
 #   other seeds uses, e.g. 86028157); SIZE becomes SIZE-seedN in the directory and file names.
 set -euo pipefail
 top=$(cd "$(dirname "$0")/../.." && pwd)
-usage() { sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; }
-seed=()
-if [ "${1:-}" = -seed ]; then
-  case ${2:-} in
-    ''|*[!0-9]*) echo "study.sh: -seed needs a whole number, not '${2:-}'" >&2; usage >&2; exit 2 ;;
+usage() { sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; }
+seed=() copy=1
+while [ $# -gt 0 ]; do
+  case $1 in
+    -seed)
+      case ${2:-} in
+        ''|*[!0-9]*) echo "study.sh: -seed needs a whole number, not '${2:-}'" >&2; usage >&2; exit 2 ;;
+      esac
+      seed=(-var seed "$2"); shift 2 ;;
+    -nocopy) copy=0; shift ;;
+    -h|--help) usage; exit 0 ;;
+    -*) echo "study.sh: unknown option '$1' (allowed: -seed N, -nocopy; the size and the engines are plain words)" >&2; usage >&2; exit 2 ;;
+    *) break ;;
   esac
-  seed=(-var seed "$2")
-  shift 2
-fi
-case ${1:-} in
-  -h|--help) usage; exit 0 ;;
-  -*) echo "study.sh: unknown option '$1' (-seed N comes first; the size and the engines are plain words)" >&2; usage >&2; exit 2 ;;
-esac
+done
 size=${1:-smoke}
 shift || true
 engines=("$@")
@@ -65,6 +68,7 @@ for engine in "${engines[@]}"; do
   done
 done
 /usr/bin/python3 "$top/inputs/uniaxial/post.py" "$out" "${runs[@]}" | tee "$out/strength.txt"
+[ "$copy" = 1 ] || { echo "study.sh: wrote $out"; exit 0; }
 dest=$top/docs/results/uniaxial
 mkdir -p "$dest"
 for f in curves.csv strength.csv stress.png strength.png snapshot.png strength.txt; do
