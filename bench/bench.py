@@ -402,11 +402,14 @@ def part4(ctx):
              "ratios 1-10 and volumes 1e-5 to 0.1 R_h^3 at uniform fractions of the rupture "
              "distance, water, theta = 0; process CPU time; the rupture distance alone, "
              "`cb_rupture_distance`, is what a law pays to place the pair before its force, "
-             "for the table law its stencil):\n\n"
-             "| law | ns per call | / cheapest closed form | rupture distance alone [ns] |\n"
-             "|---|---:|---:|---:|\n")
-    text += "".join(f"| {law} | {ns} | {ratio} | {rupture} |\n"
-                    for law, ns, ratio, rupture in rows)
+             "for the table law its stencil; the bridge step is the call an engine makes per "
+             "step for a stretched bridge, `cb_bridge_force` on a state whose constants were "
+             "derived when it got its volume):\n\n"
+             "| law | ns per call | / cheapest closed form | rupture distance alone [ns] | "
+             "ns per bridge step | / cheapest closed form |\n"
+             "|---|---:|---:|---:|---:|---:|\n")
+    text += "".join(f"| {law} | {ns} | {ratio} | {rupture} | {step} | {step_ratio} |\n"
+                    for law, ns, ratio, rupture, step, step_ratio in rows)
 
     # One sample, compressed at each time step several times: the compression is chaotic, so
     # that any change of the time step gives another trajectory and another peak.  Replicas
@@ -456,7 +459,8 @@ def part4(ctx):
              "compression (part of the scene) depends on it.\n\n")
     table = next(r for r in rows if r[0] == "table")
     summary = (f"laws: {min(float(r[1]) for r in rows):.0f}-{max(float(r[1]) for r in rows):.0f} "
-               f"ns per call, table {table[2]} x the cheapest; uniaxial smoke at dt = t_c/10: "
+               f"ns per call, table {table[2]} x the cheapest ({table[5]} x per bridge step); "
+               f"uniaxial smoke at dt = t_c/10: "
                f"{error(results[0][1]):+.1f} % (replicas' spread "
                f"{100 * (results[0][3] - results[0][2]) / reference:.1f} %) in "
                f"{results[0][4] / results[-1][4]:.2f} of the compression time of "

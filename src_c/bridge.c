@@ -144,7 +144,7 @@ static cb_status force_of(const cb_law *law, double r1, double r2, double gap,
      * scene's wet loop, bench/README.md); else through the law's row. */
     if (cb_bridge_held(law, r1, r2, gap, bridge, force)) return CB_OK;
     cb_pair pair;
-    cb_pair_make(law, r1, r2, bridge->volume, &pair);
+    cb_pair_geometry(law, r1, r2, bridge->volume, &pair);
     return cb_pair_bridge_force(law, &pair, bridge, gap, force);
 }
 

@@ -336,7 +336,7 @@ cb_validity cb_law_validity(const cb_law *law)
     return cb_law_ops_of(law)->validity(law);
 }
 
-void cb_pair_make(const cb_law *law, double r1, double r2, double volume, cb_pair *pair)
+void cb_pair_geometry(const cb_law *law, double r1, double r2, double volume, cb_pair *pair)
 {
     const cb_law_ops *ops = cb_law_ops_of(law);
     pair->plane = cb_is_plane(r2);
@@ -349,6 +349,12 @@ void cb_pair_make(const cb_law *law, double r1, double r2, double volume, cb_pai
     pair->r_harmonic = cb_radius_harmonic(r1, r2);
     pair->r_geometric = cb_radius_geometric(r1, r2);
     pair->volume = volume;
+}
+
+void cb_pair_make(const cb_law *law, double r1, double r2, double volume, cb_pair *pair)
+{
+    const cb_law_ops *ops = cb_law_ops_of(law);
+    cb_pair_geometry(law, r1, r2, volume, pair);
     if (ops->locate) ops->locate(law, pair);
 }
 
@@ -475,15 +481,24 @@ cb_status cb_bridge_force_in_full(const cb_law *law, const cb_pair *pair,
                                   const cb_bridge *bridge, double gap, double *force)
 {
     (void)bridge;
+    const cb_law_ops *ops = cb_law_ops_of(law);
     double stiffness = 0.0;
-    return cb_law_ops_of(law)->force(law, pair, gap, force, &stiffness);
+    if (!ops->locate) return ops->force(law, pair, gap, force, &stiffness);
+    cb_pair located = *pair;
+    ops->locate(law, &located);
+    return ops->force(law, &located, gap, force, &stiffness);
 }
 
 cb_status cb_pair_bridge_force(const cb_law *law, const cb_pair *pair, const cb_bridge *bridge,
                                double gap, double *force)
 {
-    if (!(gap > 0.0 && gap <= bridge->rupture))
-        return cb_pair_force(law, pair, bridge->rupture, gap, force, NULL);
+    if (!(gap > 0.0 && gap <= bridge->rupture)) {
+        const cb_law_ops *ops = cb_law_ops_of(law);
+        if (!ops->locate) return cb_pair_force(law, pair, bridge->rupture, gap, force, NULL);
+        cb_pair located = *pair;
+        ops->locate(law, &located);
+        return cb_pair_force(law, &located, bridge->rupture, gap, force, NULL);
+    }
     if (law->validity == CB_VALIDITY_STRICT && !inside_validity(law, pair))
         return CB_ERR_OUT_OF_VALIDITY;
     double f = 0.0;

@@ -259,6 +259,24 @@ static double rupture_root(const struct cb_table *t, const cb_table_position *p,
             (wt[2] * row_sum[2] + wt[3] * row_sum[3])) * inverse_sixth_root_volume;
 }
 
+/* The pair's size ratio in ratio nodes: q = sqrt(1 - R_small / R_large) (0 at a plane). */
+static double ratio_coordinate(const cb_pair *pair)
+{
+    return sqrt(1.0 - pair->r_small / pair->r_large) * table_ratio_nodes_per_q;
+}
+
+/* The 4 x 4 stencil at these coordinates (in nodes) and its weights, in double for the
+ * rupture distance and in single precision for the force's cells. */
+static void place(cb_table_position *p, double x_ratio, double x_volume)
+{
+    p->ratio_first = lagrange_stencil(x_ratio, TABLE_RATIOS, p->ratio_weight);
+    p->volume_first = lagrange_stencil(x_volume, TABLE_VOLUMES, p->volume_weight);
+    for (int n = 0; n < 4; ++n) {
+        p->cell_ratio_weight[n] = (float)p->ratio_weight[n];
+        p->cell_volume_weight[n] = (float)p->volume_weight[n];
+    }
+}
+
 /* Where the pair sits in the table: the 4 x 4 stencil in (q, ln v), its weights along
  * each axis (a sum over the stencil is four rows summed with the volume weights, then the
  * rows with the ratio weights: no 16 products to form first), and its rupture distance.
@@ -277,17 +295,10 @@ static void table_locate(const cb_law *law, cb_pair *pair)
     double clamped = log_volume < table_log_volume_min   ? table_log_volume_min
                      : log_volume > table_log_volume_max ? table_log_volume_max
                                                          : log_volume;
-    double x_ratio = sqrt(1.0 - pair->r_small / pair->r_large) * table_ratio_nodes_per_q;
-    double x_volume = (clamped - table_log_volume_first) * table_volume_nodes_per_log;
-    p->ratio_first = lagrange_stencil(x_ratio, TABLE_RATIOS, p->ratio_weight);
-    p->volume_first = lagrange_stencil(x_volume, TABLE_VOLUMES, p->volume_weight);
-    for (int n = 0; n < 4; ++n) {
-        p->cell_ratio_weight[n] = (float)p->ratio_weight[n];
-        p->cell_volume_weight[n] = (float)p->volume_weight[n];
-    }
-    p->inverse_rh = inverse_rh;
-    p->rupture_root = rupture_root(table_of(law), p, exp(log_volume * (-1.0 / 6.0)));
-    p->scaled_rupture = 1.0 / (p->rupture_root * p->rupture_root);
+    p->volume_coordinate = (clamped - table_log_volume_first) * table_volume_nodes_per_log;
+    place(p, ratio_coordinate(pair), p->volume_coordinate);
+    double root = rupture_root(table_of(law), p, exp(log_volume * (-1.0 / 6.0)));
+    p->scaled_rupture = 1.0 / (root * root);
 }
 
 static double table_rupture(const cb_law *law, const cb_pair *pair)
@@ -372,30 +383,30 @@ static double cubic_slope(const double c[4], double x)
 static const double slope_w_min = 0.5 / (TABLE_GAPS - 1);
 static const double slope_w_max = 1.0 - 0.25 / (TABLE_GAPS - 1);
 
-static cb_status table_force(const cb_law *law, const cb_pair *pair, double gap,
-                             double *force, double *stiffness)
+/* F and, if stiffness is not NULL, dF/dgap at gap >= 0 for a placed stencil and the
+ * table's rupture distance of the pair.  w from sqrt(gap / rupture): one division, which
+ * lets a bridge's stored rupture distance (the table's own, bit for bit) stand for the
+ * interpolated one. */
+static void force_at(const cb_law *law, const cb_table_position *p, double r_harmonic,
+                     double rupture, double gap, double *force, double *stiffness)
 {
-    const struct cb_table *t = table_of(law);
-    const cb_table_position *p = &pair->table;
-    double rupture = p->scaled_rupture * pair->r_harmonic;
-    /* sqrt(gap / rupture) as sqrt(gap / R_h) sqrt(R_h / rupture): the first root does not
-     * wait for the stencil, and no division does */
-    double root_fraction = sqrt(gap * p->inverse_rh) * p->rupture_root;
+    double root_fraction = sqrt(gap / rupture);
     double w = gap < rupture && root_fraction < 1.0 ? sqrt(1.0 - root_fraction) : 0.0;
     double x = 0.0, c[4];
     int k = cell_of(cell_coordinate(w), &x);
-    cubic_at(t, p, k, c);
-    double scale = 2.0 * CB_PI * law->surface_tension * pair->r_harmonic;
+    cubic_at(table_of(law), p, k, c);
+    double scale = 2.0 * CB_PI * law->surface_tension * r_harmonic;
     double value = cubic_value(c, x);
     if (!(value > 0.0) || gap >= rupture) {
         /* clamped at 0 (a repulsive exact force near contact at large angles), or held at
          * its value at the fold beyond it (a rupture rule reaching further than the
          * exact one): the force does not change with the gap there */
         *force = value > 0.0 ? value * scale : 0.0;
-        *stiffness = 0.0;
-        return CB_OK;
+        if (stiffness) *stiffness = 0.0;
+        return;
     }
     *force = value * scale;
+    if (!stiffness) return;
     /* dF/dgap = dF/dy dy/dw / (dgap/dw), dgap/dw = -4 rupture w (1 - w^2). Both vanish
      * at contact (a finite limit) and dgap/dw vanishes at the fold (the exact force has an
      * infinite slope there). Within half a cell of either end the stiffness is taken at
@@ -406,6 +417,37 @@ static cb_status table_force(const cb_law *law, const cb_pair *pair, double gap,
     double x_slope = cell_coordinate(w_slope) * (TABLE_GAPS - 1) - k;
     *stiffness = cubic_slope(c, x_slope) * (TABLE_GAPS - 1) * cell_coordinate_slope(w_slope) *
                  scale / (-4.0 * rupture * w_slope * (1.0 - w_slope * w_slope));
+}
+
+static cb_status table_force(const cb_law *law, const cb_pair *pair, double gap,
+                             double *force, double *stiffness)
+{
+    const cb_table_position *p = &pair->table;
+    force_at(law, p, pair->r_harmonic, p->scaled_rupture * pair->r_harmonic, gap, force,
+             stiffness);
+    return CB_OK;
+}
+
+/* A bridge keeps its volume coordinate (ln v in nodes: the logarithm, the one costly step
+ * of locating it) when its rupture distance is the table's own, which it then keeps too;
+ * under another rupture rule it keeps none (0) and its force is evaluated in full.  The
+ * coordinate is at least 1 (the domain starts a node inside the grid), so never 0. */
+static double table_bridge_constant(const cb_law *law, const cb_pair *pair)
+{
+    return law->rupture_in_use == CB_RUPTURE_EXACT ? pair->table.volume_coordinate : 0.0;
+}
+
+/* A stretched bridge's force from its constants: the stencil from the stored volume
+ * coordinate and the radii, the gap coordinate from the stored rupture distance — a
+ * one-dimensional lookup in the gap, no logarithm, exponential or rupture interpolation
+ * per step; the same numbers as table_force on the located pair, bit for bit. */
+static cb_status table_bridge_force(const cb_law *law, const cb_pair *pair,
+                                    const cb_bridge *bridge, double gap, double *force)
+{
+    if (!(bridge->law_constant > 0.0)) return cb_bridge_force_in_full(law, pair, bridge, gap, force);
+    cb_table_position p;
+    place(&p, ratio_coordinate(pair), bridge->law_constant);
+    force_at(law, &p, pair->r_harmonic, bridge->rupture, gap, force, NULL);
     return CB_OK;
 }
 
@@ -537,6 +579,6 @@ const cb_law_ops cb_table_ops = {
     .release = table_release,
     .locate = table_locate,
     .stiffness_bound = table_stiffness_bound,
-    .bridge_constant = cb_no_bridge_constant,
-    .bridge_force = cb_bridge_force_in_full,
+    .bridge_constant = table_bridge_constant,
+    .bridge_force = table_bridge_force,
 };

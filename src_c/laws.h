@@ -20,9 +20,9 @@ typedef struct cb_table_position {
     double ratio_weight[4], volume_weight[4];        /* the Lagrange weights along each axis */
     float cell_ratio_weight[4], cell_volume_weight[4]; /* the same in single precision, for the
                                                         * force's cells */
-    double inverse_rh;             /* 1 / R_h */
-    double rupture_root;           /* sqrt(R_h / rupture), interpolated */
-    double scaled_rupture;         /* rupture / R_h, its inverse square */
+    double volume_coordinate;      /* ln(V / R_h^3) in volume nodes, clamped to the table:
+                                    * a bridge's constant (its stencil without the log) */
+    double scaled_rupture;         /* rupture / R_h, interpolated (as sqrt(R_h / rupture)) */
 } cb_table_position;
 
 /* Inputs of one evaluation, with the radius conventions every law may need.  At a plane
@@ -41,8 +41,12 @@ typedef struct cb_pair {
 
 /* The pair of one call; for the table law, located in its table. Written through a
  * pointer, not returned: returned by value, the struct (250 bytes with the table's
- * position) was built on the stack and copied, ~25 ns on every law's call. */
+ * position) was built on the stack and copied, ~25 ns on every law's call.
+ * cb_pair_geometry makes the radii and volume only, not located: what a stretched
+ * bridge's bridge_force gets (a law that locates finds its place from the bridge's
+ * constant, or locates the pair itself). */
 void cb_pair_make(const cb_law *law, double r1, double r2, double volume, cb_pair *pair);
+void cb_pair_geometry(const cb_law *law, double r1, double r2, double volume, cb_pair *pair);
 
 /* For a pair already made from checked inputs (cb_force, cb_rupture_distance and
  * cb_bridge_step share them, so that one call computes the rupture distance at most once):
@@ -88,8 +92,9 @@ typedef struct cb_law_ops {
     int keyword_count;
     cb_status (*set_keyword)(cb_law *law, int index, const char *value, cb_message *msg);
     /* the constant a bridge keeps for its law (cb_bridge.law_constant, finite, >= 0),
-     * derived at formation, and a stretched bridge's force (0 < gap <= its rupture
-     * distance) from the bridge's stored constants: equal to force at that gap */
+     * derived at formation from the located pair, and a stretched bridge's force
+     * (0 < gap <= its rupture distance) from the bridge's stored constants and the pair's
+     * geometry (cb_pair_geometry, not located): equal to force at that gap, bit for bit */
     double (*bridge_constant)(const cb_law *law, const cb_pair *pair);
     cb_status (*bridge_force)(const cb_law *law, const cb_pair *pair,
                               const cb_bridge *bridge, double gap, double *force);
@@ -108,13 +113,15 @@ static inline const cb_law_ops *cb_law_ops_of(const cb_law *law)
 }
 
 /* For the laws that keep no constant of their own (law.c): law_constant 0, and a
- * stretched bridge's force the law's force in full. */
+ * stretched bridge's force the law's force in full (the pair located first where the law
+ * locates). */
 double cb_no_bridge_constant(const cb_law *law, const cb_pair *pair);
 cb_status cb_bridge_force_in_full(const cb_law *law, const cb_pair *pair,
                                   const cb_bridge *bridge, double gap, double *force);
 
 /* A stretched bridge's force (0 < gap, under the validity and rupture rules, as
- * cb_pair_force with the bridge's rupture distance) through its law's bridge_force. */
+ * cb_pair_force with the bridge's rupture distance) through its law's bridge_force; the
+ * pair as cb_pair_geometry makes it. */
 cb_status cb_pair_bridge_force(const cb_law *law, const cb_pair *pair, const cb_bridge *bridge,
                                double gap, double *force);
 

@@ -14,6 +14,7 @@
  * inside and beyond the table's volumes, and a stiffness of 0 where the force is clamped
  * at 0 or held beyond the fold. */
 #include <math.h>
+#include <string.h>
 #include <stdint.h>
 
 #include "capbridge.h"
@@ -294,6 +295,35 @@ static void test_flat_force(void)
     cb_law_release(&law);
 }
 
+/* A stretched bridge's force from its stored constants (cb_bridge_force: the stencil from
+ * the stored volume coordinate, the gap coordinate from the stored rupture distance, the
+ * engines' per-step call) is cb_force's, bit for bit: size ratios 1 to 20 and the plane,
+ * volumes inside the table and beyond it on both sides (clamped), gaps from contact to the
+ * rupture distance.  Under the table's own rupture rule the bridge keeps a constant (> 0);
+ * under Lian's it keeps none and is evaluated in full, with the same result. */
+static void test_bridge_path(const cb_law *law, uint64_t *state)
+{
+    const double scaled_volumes[] = {1e-8, 1e-6, 3e-5, 2e-3, 0.1, 0.3, 3.0};
+    int kept = law->rupture_in_use == CB_RUPTURE_EXACT;
+    for (int i = 0; i < 40; ++i) {
+        double r1 = 1e-3 * exp(log(4.0) * next_uniform(state));
+        double r2 = i % 5 == 0 ? CB_PLANE : r1 * exp(log(20.0) * next_uniform(state));
+        double rh = cb_radius_harmonic(r1, r2);
+        double volume = scaled_volumes[i % 7] * rh * rh * rh, rupture = 0.0;
+        cb_bridge b = {0};
+        CHECK_STATUS(cb_bridge_set_volume(law, r1, r2, volume, &b), CB_OK);
+        CHECK(kept ? b.law_constant > 0.0 : b.law_constant == 0.0);
+        CHECK_STATUS(cb_rupture_distance(law, r1, r2, volume, &rupture), CB_OK);
+        for (int k = 0; k < 6; ++k) {
+            double fraction = k == 5 ? 1.0 : k == 0 ? 1e-9 : next_uniform(state);
+            double gap = rupture * fraction, expected = -1.0, force = -2.0;
+            CHECK_STATUS(cb_force(law, r1, r2, volume, gap, &expected, NULL), CB_OK);
+            CHECK_STATUS(cb_bridge_force(law, r1, r2, gap, &b, &force), CB_OK);
+            CHECK(memcmp(&force, &expected, sizeof force) == 0);
+        }
+    }
+}
+
 int main(int argc, char **argv)
 {
     (void)argc;
@@ -351,6 +381,10 @@ int main(int argc, char **argv)
         }
         test_reproducers(&law);
         test_rupture_inverse(&law);
+        test_bridge_path(&law, &state);
+        CHECK_STATUS(cb_law_configure(&law, "rupture", "lian", &msg), CB_OK);
+        CHECK_STATUS(cb_law_prepare(&law, &msg), CB_OK);
+        test_bridge_path(&law, &state);
         cb_law_release(&law);
     }
     test_flat_force();

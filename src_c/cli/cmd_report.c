@@ -201,7 +201,7 @@ static int measure_costs(law_report *reports, double *viscous_ns)
                  cb_law_configure(&laws[m], "min_gap", "1e-8", &msg) == CB_OK;
         ok = ok && cb_law_prepare(&laws[m], &msg) == CB_OK;
     }
-    ok = ok && cb_law_costs_ns(laws, CB_MODEL_COUNT + 1, ns, NULL) == 0;
+    ok = ok && cb_law_costs_ns(laws, CB_MODEL_COUNT + 1, ns, NULL, NULL) == 0;
     for (int m = 0; m < prepared; ++m) cb_law_release(&laws[m]);
     for (int m = 0; m < CB_MODEL_COUNT && ok; ++m) reports[m].ns_per_call = ns[m];
     *viscous_ns = ns[VISCOUS];

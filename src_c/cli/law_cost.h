@@ -12,7 +12,11 @@
  * with its viscous force on: cb_force and cb_viscous_damping per call.  If
  * ns_per_rupture is not NULL, the cost of cb_rupture_distance alone on the same pairs is
  * timed in the same passes (what a law pays to place the pair before its force: for the
- * table law its stencil).  Returns 0 on success, -1 when memory runs out. */
-int cb_law_costs_ns(const cb_law *laws, int n, double *ns_per_call, double *ns_per_rupture);
+ * table law its stencil).  If ns_per_bridge_step is not NULL, the cost of the call an
+ * engine makes per step for a stretched bridge (cb_bridge_force on a state whose constants
+ * were derived when it got its volume, the same pairs and gaps) is timed too.  Returns 0
+ * on success, -1 when memory runs out. */
+int cb_law_costs_ns(const cb_law *laws, int n, double *ns_per_call, double *ns_per_rupture,
+                    double *ns_per_bridge_step);
 
 #endif
