@@ -259,7 +259,8 @@ static double rupture_root(const struct cb_table *t, const cb_table_position *p,
             (wt[2] * row_sum[2] + wt[3] * row_sum[3])) * inverse_sixth_root_volume;
 }
 
-/* The pair's size ratio in ratio nodes: q = sqrt(1 - R_small / R_large) (q = 1, the last node, at a plane). */
+/* The pair's size ratio in ratio nodes: q = sqrt(1 - R_small / R_large) (at a plane q = 1,
+ * the last node). */
 static double ratio_coordinate(const cb_pair *pair)
 {
     return sqrt(1.0 - pair->r_small / pair->r_large) * table_ratio_nodes_per_q;
