@@ -4,10 +4,10 @@
 # and 4 %, Protocol 2: LAMMPS fix capillary/liquid remove 0.5, LIGGGHTS the model's remove
 # 0.5, both with the draw of seed 7723), and dry; then post.py.
 # w is in percent of the grains' mass, as the decks take it (-var w 2 = 2 %).
-# Usage: inputs/uniaxial/study.sh [-seed N] [-nocopy] [smoke|default|paper] [lammps] [liggghts]
-#   (default: smoke, both engines). Writes out/uniaxial/study-SIZE/ and copies the CSV and PNG
-#   files to docs/results/uniaxial/ (SIZE in their names; -nocopy: not, for a study whose
-#   results go to a page of their own). With CAPBRIDGE_LOCK=FILE every run
+# Usage: inputs/uniaxial/study.sh [-seed N] [smoke|default|paper] [lammps] [liggghts]
+#   (default: smoke, both engines). Writes out/uniaxial/study-SIZE/ (the runs, post.py's CSV
+#   and PNG files); a results page takes what it shows from there into a folder of its own
+#   under docs/results/uniaxial/, with the code revision. With CAPBRIDGE_LOCK=FILE every run
 #   holds `flock FILE` (one heavy run at a time on a machine shared by several jobs); a run is
 #   skipped when its end.dump exists already (delete the run directory to redo it).
 #   -seed N: every run gets -var seed N, another packing (without it each deck's own seed:
@@ -16,7 +16,7 @@
 set -euo pipefail
 top=$(cd "$(dirname "$0")/../.." && pwd)
 usage() { sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; }
-seed=() copy=1
+seed=()
 while [ $# -gt 0 ]; do
   case $1 in
     -seed)
@@ -24,9 +24,8 @@ while [ $# -gt 0 ]; do
         ''|*[!0-9]*) echo "study.sh: -seed needs a whole number, not '${2:-}'" >&2; usage >&2; exit 2 ;;
       esac
       seed=(-var seed "$2"); shift 2 ;;
-    -nocopy) copy=0; shift ;;
     -h|--help) usage; exit 0 ;;
-    -*) echo "study.sh: unknown option '$1' (allowed: -seed N, -nocopy; the size and the engines are plain words)" >&2; usage >&2; exit 2 ;;
+    -*) echo "study.sh: unknown option '$1' (allowed: -seed N; the size and the engines are plain words)" >&2; usage >&2; exit 2 ;;
     *) break ;;
   esac
 done
@@ -68,10 +67,4 @@ for engine in "${engines[@]}"; do
   done
 done
 /usr/bin/python3 "$top/inputs/uniaxial/post.py" "$out" "${runs[@]}" | tee "$out/strength.txt"
-[ "$copy" = 1 ] || { echo "study.sh: wrote $out"; exit 0; }
-dest=$top/docs/results/uniaxial
-mkdir -p "$dest"
-for f in curves.csv strength.csv stress.png strength.png snapshot.png strength.txt; do
-  [ -f "$out/$f" ] && cp "$out/$f" "$dest/${f%.*}-$tag.${f##*.}"
-done
-echo "study.sh: wrote $out and $dest"
+echo "study.sh: wrote $out"
